@@ -1,0 +1,56 @@
+# Finds igaprep's third-party dependencies (all Debian 12 packages) and makes
+# imported targets for those that ship no usable CMake package.
+# Used by the build and by the installed igaprepConfig.cmake.
+include(CMakeFindDependencyMacro)
+
+find_dependency(Eigen3 3.3 NO_MODULE)
+find_dependency(CGAL)
+find_dependency(HDF5 COMPONENTS C CXX)
+
+# TetGen (libtet1.5-dev): header tetgen.h, library libtet.so, needs TETLIBRARY.
+if(NOT TARGET igaprep_dep_tetgen)
+  find_path(IGAPREP_TETGEN_INCLUDE_DIR tetgen.h REQUIRED)
+  find_library(IGAPREP_TETGEN_LIBRARY NAMES tet REQUIRED)
+  add_library(igaprep_dep_tetgen INTERFACE IMPORTED)
+  set_target_properties(igaprep_dep_tetgen PROPERTIES
+    INTERFACE_INCLUDE_DIRECTORIES "${IGAPREP_TETGEN_INCLUDE_DIR}"
+    INTERFACE_LINK_LIBRARIES "${IGAPREP_TETGEN_LIBRARY}"
+    INTERFACE_COMPILE_DEFINITIONS TETLIBRARY)
+endif()
+
+# OpenSubdiv 3.5 (libosd-dev): Debian's OpenSubdivConfig.cmake names static
+# libraries that are not installed, so find the shared CPU library by hand.
+if(NOT TARGET igaprep_dep_osd)
+  find_path(IGAPREP_OSD_INCLUDE_DIR opensubdiv/far/topologyRefiner.h REQUIRED)
+  find_library(IGAPREP_OSD_LIBRARY NAMES osdCPU REQUIRED)
+  add_library(igaprep_dep_osd INTERFACE IMPORTED)
+  set_target_properties(igaprep_dep_osd PROPERTIES
+    INTERFACE_INCLUDE_DIRECTORIES "${IGAPREP_OSD_INCLUDE_DIR}"
+    INTERFACE_LINK_LIBRARIES "${IGAPREP_OSD_LIBRARY}")
+endif()
+
+# HDF5 C and C++ (serial) as one target.
+if(NOT TARGET igaprep_dep_hdf5)
+  add_library(igaprep_dep_hdf5 INTERFACE IMPORTED)
+  set_target_properties(igaprep_dep_hdf5 PROPERTIES
+    INTERFACE_INCLUDE_DIRECTORIES "${HDF5_INCLUDE_DIRS}"
+    INTERFACE_LINK_LIBRARIES "${HDF5_CXX_LIBRARIES};${HDF5_LIBRARIES}"
+    INTERFACE_COMPILE_DEFINITIONS "${HDF5_DEFINITIONS}")
+endif()
+
+# CHOLMOD (libsuitesparse-dev) is optional: Eigen's simplicial LDLT otherwise.
+if(NOT TARGET igaprep_dep_cholmod)
+  find_path(IGAPREP_CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse)
+  find_library(IGAPREP_CHOLMOD_LIBRARY NAMES cholmod)
+  find_library(IGAPREP_SUITESPARSECONFIG_LIBRARY NAMES suitesparseconfig)
+  add_library(igaprep_dep_cholmod INTERFACE IMPORTED)
+  if(IGAPREP_CHOLMOD_INCLUDE_DIR AND IGAPREP_CHOLMOD_LIBRARY)
+    set(IGAPREP_HAVE_CHOLMOD ON)
+    set_target_properties(igaprep_dep_cholmod PROPERTIES
+      INTERFACE_INCLUDE_DIRECTORIES "${IGAPREP_CHOLMOD_INCLUDE_DIR}"
+      INTERFACE_LINK_LIBRARIES "${IGAPREP_CHOLMOD_LIBRARY};${IGAPREP_SUITESPARSECONFIG_LIBRARY}"
+      INTERFACE_COMPILE_DEFINITIONS IGAPREP_HAVE_CHOLMOD)
+  else()
+    set(IGAPREP_HAVE_CHOLMOD OFF)
+  endif()
+endif()

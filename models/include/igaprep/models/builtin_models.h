@@ -1,0 +1,30 @@
+#pragma once
+// The built-in models (sphere2, ring2, torus3): nested closed surfaces made by
+// deterministic code, and the folder of their committed case files.
+#include <string>
+#include <vector>
+
+#include "igaprep/mesh/tri_mesh.h"
+
+namespace igaprep::models {
+
+struct BuiltinModel {
+  std::string name;
+  std::vector<mesh::TriMesh> surfaces;     // T1..Tn, outermost first
+  std::vector<std::string> surface_files;  // file names beside the case file
+};
+
+// The names of the built-in models; ring2 is the default model.
+std::vector<std::string> builtin_model_names();
+std::string default_model_name();
+
+// Generates the surfaces of a built-in model; throws Error(BadInput) for an
+// unknown name.
+BuiltinModel make_builtin_model(const std::string& name);
+
+// Folder holding models/<name>/case.json and the generated surfaces (the
+// source tree's models/ folder).
+std::string builtin_models_dir();
+std::string builtin_case_path(const std::string& name);
+
+}  // namespace igaprep::models

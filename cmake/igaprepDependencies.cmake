@@ -34,8 +34,7 @@ if(NOT TARGET igaprep_dep_hdf5)
   add_library(igaprep_dep_hdf5 INTERFACE IMPORTED)
   set_target_properties(igaprep_dep_hdf5 PROPERTIES
     INTERFACE_INCLUDE_DIRECTORIES "${HDF5_INCLUDE_DIRS}"
-    INTERFACE_LINK_LIBRARIES "${HDF5_CXX_LIBRARIES};${HDF5_LIBRARIES}"
-    INTERFACE_COMPILE_DEFINITIONS "${HDF5_DEFINITIONS}")
+    INTERFACE_LINK_LIBRARIES "${HDF5_CXX_LIBRARIES};${HDF5_LIBRARIES}")
 endif()
 
 # CHOLMOD (libsuitesparse-dev) is optional: Eigen's simplicial LDLT otherwise.

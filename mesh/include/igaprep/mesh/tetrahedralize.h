@@ -1,0 +1,30 @@
+#pragma once
+// Tetrahedralization of nested closed surfaces T1..Tn (outermost first) as one
+// piecewise linear complex with TetGen, a material per tet and every input
+// triangle kept as a marked tet face.
+#include <vector>
+
+#include "igaprep/mesh/tet_mesh.h"
+#include "igaprep/mesh/tri_mesh.h"
+
+namespace igaprep::mesh {
+
+struct TetgenOptions {
+  double radius_edge_ratio = 1.5;  // TetGen -q bound; 0 switches quality refinement off
+  double max_volume = 0.0;         // TetGen -a bound; 0 = no bound
+  bool quiet = true;               // TetGen -Q
+};
+
+// Inputs: `surfaces` are closed, validated, nested (T1 outermost);
+// `embedded` are open or closed surfaces strictly inside T1 to keep as tet
+// faces too (the midsurface later). Surfaces keep their triangles exactly
+// (no Steiner points on them).
+// Output: a TetMesh with material i between T(i+1) and T(i+2) (0-based:
+// material 0 between T1 and T2, ..., n-1 inside Tn); F/F_marker list every
+// input triangle with marker = surface index (0..n-1), then every embedded
+// triangle with marker n + k for embedded surface k.
+// Throws Error(BadInput) with TetGen's reason when it fails.
+TetMesh tetrahedralize(const std::vector<TriMesh>& surfaces, const std::vector<TriMesh>& embedded = {},
+                       const TetgenOptions& options = {});
+
+}  // namespace igaprep::mesh

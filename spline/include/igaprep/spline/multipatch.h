@@ -1,0 +1,56 @@
+#pragma once
+// The data of a multipatch trivariate spline model, as plain structs. This is
+// the model every later stage (fit, reduce, check, solve, export) passes
+// around; the algorithms that act on it live in their own headers.
+#include <Eigen/Core>
+#include <array>
+#include <string>
+#include <vector>
+
+namespace igaprep::spline {
+
+// Patch sides follow G+Smo: 1 = u0, 2 = u1, 3 = v0, 4 = v1, 5 = w0, 6 = w1.
+enum Side : int { kU0 = 1, kU1 = 2, kV0 = 3, kV1 = 4, kW0 = 5, kW1 = 6 };
+
+// One trivariate tensor-product patch, B-spline or NURBS.
+struct Patch {
+  std::array<int, 3> degrees{{0, 0, 0}};        // (p_u, p_v, p_w)
+  std::array<std::vector<double>, 3> knots;      // full open knot vectors, length n_d + p_d + 1
+  Eigen::MatrixXd control_points;                // (n_u*n_v*n_w) x 3, Cartesian, u fastest, then v, then w
+  Eigen::VectorXd weights;                       // empty for a B-spline patch, else one per control point
+  int material = 0;                              // index into MultiPatch::materials
+
+  int count(int dir) const { return static_cast<int>(knots[dir].size()) - degrees[dir] - 1; }
+  int index(int i, int j, int k) const { return i + count(0) * (j + count(1) * k); }
+  bool rational() const { return weights.size() > 0; }
+};
+
+// Two patch sides that touch (G+Smo convention): dirmap[d] is the direction
+// of patch b that runs along direction d of patch a; orient[d] is 1 when it
+// runs the same sense, 0 when reversed.
+struct Interface {
+  int patch_a = 0, side_a = 0, patch_b = 0, side_b = 0;
+  std::array<int, 3> dirmap{{0, 1, 2}};
+  std::array<int, 3> orient{{1, 1, 1}};
+  int surface = -1;  // index into MultiPatch::labels of the input surface it lies on, or -1
+};
+
+struct BoundarySide {
+  int patch = 0, side = 0, label = 0;  // label: index into MultiPatch::labels
+};
+
+struct Material {
+  std::string name;
+  double young_modulus = 1.0;
+  double poisson_ratio = 0.3;
+};
+
+struct MultiPatch {
+  std::vector<Patch> patches;
+  std::vector<Interface> interfaces;
+  std::vector<BoundarySide> boundaries;
+  std::vector<std::string> labels;  // label 0 is the outer surface T1
+  std::vector<Material> materials;
+};
+
+}  // namespace igaprep::spline

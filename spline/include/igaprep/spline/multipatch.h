@@ -19,6 +19,8 @@ struct Patch {
   Eigen::MatrixXd control_points;                // (n_u*n_v*n_w) x 3, Cartesian, u fastest, then v, then w
   Eigen::VectorXd weights;                       // empty for a B-spline patch, else one per control point
   int material = 0;                              // index into MultiPatch::materials
+  Eigen::MatrixXd displacement;                  // empty, or a solve result: one row (ux, uy, uz)
+                                                 // per control point, coefficients in this basis
 
   int count(int dir) const { return static_cast<int>(knots[dir].size()) - degrees[dir] - 1; }
   int index(int i, int j, int k) const { return i + count(0) * (j + count(1) * k); }
@@ -51,6 +53,14 @@ struct MultiPatch {
   std::vector<BoundarySide> boundaries;
   std::vector<std::string> labels;  // label 0 is the outer surface T1
   std::vector<Material> materials;
+
+  // Present in solve results (ARCHITECTURE.md): root attributes of the file.
+  bool has_solution = false;
+  double strain_energy = 0.0;
+  double max_displacement = 0.0;
+
+  // Optional provenance: generator name, the case file as JSON, inputs as JSON.
+  std::string provenance_generator, provenance_case, provenance_inputs;
 };
 
 }  // namespace igaprep::spline

@@ -8,10 +8,19 @@
 
 namespace igaprep::models {
 
+struct BuiltinMaterial {
+  std::string name;
+  double young_modulus;
+  double poisson_ratio;
+};
+
 struct BuiltinModel {
   std::string name;
+  std::string description;
   std::vector<mesh::TriMesh> surfaces;     // T1..Tn, outermost first
-  std::vector<std::string> surface_files;  // file names beside the case file
+  std::vector<std::string> labels;         // one per surface ("outer", "inner", ...)
+  std::vector<BuiltinMaterial> materials;  // one per surface: material i lies inside T(i+1)
+  int expected_genus = 0;
 };
 
 // The names of the built-in models; ring2 is the default model.

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs what igaprep needs on Debian 12 (only what is missing, quietly),
+# then configures and builds it in Release in ./build.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+PACKAGES=(
+  build-essential cmake pkg-config
+  libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
+  libtet1.5-dev libhdf5-dev libosd-dev libsuitesparse-dev
+  libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
+  python3 python3-numpy python3-scipy python3-h5py python3-vtk9
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  SUDO=""
+  [[ $(id -u) -ne 0 ]] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+JOBS=$(nproc 2>/dev/null || echo 2)
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j"$JOBS" 2>&1 | grep -E "error|warning: unused|^make.*Error" || true
+test -x build/bin/igaprep || { echo "setup: build failed (see: cmake --build build)"; exit 1; }
+echo "setup: built build/bin/igaprep"

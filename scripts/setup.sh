@@ -26,6 +26,10 @@ fi
 
 JOBS=$(nproc 2>/dev/null || echo 2)
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$JOBS" 2>&1 | grep -E "error|warning: unused|^make.*Error" || true
-test -x build/bin/igaprep || { echo "setup: build failed (see: cmake --build build)"; exit 1; }
+echo "setup: building with $JOBS jobs (log: build/build.log)"
+if ! cmake --build build -j"$JOBS" >build/build.log 2>&1; then
+  grep -E "error|Error" build/build.log | head -40
+  echo "setup: build failed, full log in build/build.log"
+  exit 1
+fi
 echo "setup: built build/bin/igaprep"

@@ -4,6 +4,12 @@
 
 namespace igaprep::cli {
 
+void add_check_mesh_command(CLI::App& app);
+void add_tetmesh_command(CLI::App& app);
+void add_offset_command(CLI::App& app);
+void add_model_command(CLI::App& app);
+void add_run_command(CLI::App& app);
+
 namespace {
 std::map<CLI::App*, CommandBody>& bodies() {
   static std::map<CLI::App*, CommandBody> table;
@@ -14,7 +20,11 @@ std::map<CLI::App*, CommandBody>& bodies() {
 void set_body(CLI::App* sub, CommandBody body) { bodies()[sub] = std::move(body); }
 
 void register_commands(CLI::App& app) {
-  (void)app;
+  add_run_command(app);
+  add_check_mesh_command(app);
+  add_offset_command(app);
+  add_tetmesh_command(app);
+  add_model_command(app);
 }
 
 int run_selected(CLI::App& app) {

@@ -40,6 +40,7 @@ Eigen::Vector3d evaluate_tangent(const Curve& c, double u);  // dx/du
 // 1-D basis tables of a patch's three directions at grid parameters.
 struct GridBasis {
   std::array<BasisTable, 3> tables;
+  std::array<std::vector<double>, 3> knots;  // of the patch the tables were built for
   int order = 0;
   int size(int d) const { return tables[d].size(); }
   int point_count() const { return size(0) * size(1) * size(2); }

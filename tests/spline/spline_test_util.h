@@ -1,0 +1,84 @@
+#pragma once
+// Shared builders for the spline tests.
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "igaprep/spline/spline.h"
+
+namespace spline_test {
+using namespace igaprep::spline;
+
+// Random open knot vector: n functions of degree p on [a, b], interior knots
+// random with some multiplicities up to max_mult.
+inline std::vector<double> random_knots(std::mt19937& rng, int p, int n, int max_mult, double a = 0.0,
+                                        double b = 1.0) {
+  std::uniform_real_distribution<double> U(a, b);
+  std::uniform_int_distribution<int> M(1, std::max(1, max_mult));
+  std::vector<double> inner;
+  while (static_cast<int>(inner.size()) < n - p - 1) {
+    const double u = U(rng);
+    const int m = std::min(M(rng), n - p - 1 - static_cast<int>(inner.size()));
+    for (int i = 0; i < m; ++i) inner.push_back(u);
+  }
+  std::sort(inner.begin(), inner.end());
+  std::vector<double> K(p + 1, a);
+  K.insert(K.end(), inner.begin(), inner.end());
+  K.insert(K.end(), p + 1, b);
+  return K;
+}
+
+// A random (distorted box) patch, B-spline or NURBS.
+inline Patch random_patch(std::mt19937& rng, std::array<int, 3> deg, std::array<int, 3> n, bool rational,
+                          int max_mult = 1) {
+  Patch P;
+  P.degrees = deg;
+  for (int d = 0; d < 3; ++d) P.knots[d] = random_knots(rng, deg[d], n[d], max_mult);
+  std::uniform_real_distribution<double> J(-0.1, 0.1), W(0.5, 2.0);
+  const int N = n[0] * n[1] * n[2];
+  P.control_points.resize(N, 3);
+  const auto g0 = greville_abscissae(P.knots[0], deg[0]);
+  const auto g1 = greville_abscissae(P.knots[1], deg[1]);
+  const auto g2 = greville_abscissae(P.knots[2], deg[2]);
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i)
+        P.control_points.row(P.index(i, j, k)) =
+            Eigen::RowVector3d(g0[i] + J(rng), 2 * g1[j] + J(rng), 3 * g2[k] + J(rng));
+  if (rational) {
+    P.weights.resize(N);
+    for (int i = 0; i < N; ++i) P.weights[i] = W(rng);
+  }
+  return P;
+}
+
+// Quarter annulus: u = angle (quadratic NURBS), v = radius 1..2, w = height 0..1.
+inline Patch quarter_annulus() {
+  Patch P;
+  P.degrees = {{2, 1, 1}};
+  P.knots = {{{0, 0, 0, 1, 1, 1}, {0, 0, 1, 1}, {0, 0, 1, 1}}};
+  const double c[3][2] = {{1, 0}, {1, 1}, {0, 1}};
+  const double w[3] = {1, std::sqrt(0.5), 1};
+  P.control_points.resize(12, 3);
+  P.weights.resize(12);
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 3; ++i) {
+        const double r = 1.0 + j;
+        P.control_points.row(P.index(i, j, k)) = Eigen::RowVector3d(r * c[i][0], r * c[i][1], k);
+        P.weights[P.index(i, j, k)] = w[i];
+      }
+  return P;
+}
+
+inline Eigen::Vector3d random_param(std::mt19937& rng, const Patch& P) {
+  Eigen::Vector3d u;
+  for (int d = 0; d < 3; ++d) {
+    const auto& K = P.knots[d];
+    std::uniform_real_distribution<double> U(K.front(), K.back());
+    u[d] = U(rng);
+  }
+  return u;
+}
+
+}  // namespace spline_test

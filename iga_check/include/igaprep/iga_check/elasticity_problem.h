@@ -1,0 +1,69 @@
+#pragma once
+// What to solve: the loads, constraints and solver options of a small-strain
+// isotropic linear-elasticity problem on a spline::MultiPatch, and the figures
+// a solve reports. Plain structs; solve_elasticity (elasticity_solve.h) acts on them.
+#include <Eigen/Core>
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace igaprep::iga_check {
+
+// Zero displacement of the chosen components on every side labelled `label`.
+struct FixedSide {
+  std::string label;
+  std::array<bool, 3> components{{true, true, true}};  // x, y, z
+};
+
+// Constant traction vector (force per area) on every side labelled `label`.
+struct TractionLoad {
+  std::string label;
+  Eigen::Vector3d traction = Eigen::Vector3d::Zero();
+};
+
+// Pressure on every side labelled `label`: traction = -pressure * n with n the
+// outward normal, so a positive pressure pushes into the solid.
+struct PressureLoad {
+  std::string label;
+  double pressure = 0.0;
+};
+
+struct ElasticityProblem {
+  std::vector<FixedSide> fixed;
+  std::vector<TractionLoad> tractions;
+  std::vector<PressureLoad> pressures;
+  Eigen::Vector3d body_force = Eigen::Vector3d::Zero();  // force per volume
+  // Optional body force b(x) per volume, added to `body_force` at every
+  // quadrature point (used for manufactured solutions).
+  std::function<Eigen::Vector3d(const Eigen::Vector3d&)> body_force_function;
+};
+
+enum class LinearSolver { Cholesky, ConjugateGradient };
+
+struct ElasticityOptions {
+  int refine = 0;   // uniform h-refinement levels: each level bisects every knot span
+  int elevate = 0;  // degree elevation in every direction (applied before refine)
+  // Gauss points per direction: degree + 1 + extra_quadrature.
+  int extra_quadrature = 0;
+  LinearSolver solver = LinearSolver::Cholesky;
+  double cg_tolerance = 1e-10;  // relative residual for LinearSolver::ConjugateGradient
+  int cg_max_iterations = 0;    // 0: 10 * unknowns
+};
+
+struct ElasticityReport {
+  long long unknowns = 0;        // free scalar unknowns after eliminating constraints
+  long long fixed_dofs = 0;      // scalar coefficients set to zero by constraints
+  long long nonzeros = 0;        // stored non-zeros of the stiffness matrix (one triangle)
+  long long elements = 0;        // knot-span elements integrated
+  long long quadrature_points = 0;
+  double assembly_seconds = 0.0;
+  double solve_seconds = 0.0;
+  double strain_energy = 0.0;    // 1/2 u^T K u
+  double max_displacement = 0.0; // largest |u| over the control coefficients (see docs)
+  int cg_iterations = 0;
+  double cg_residual = 0.0;
+  std::string solver;            // the linear solver actually used
+};
+
+}  // namespace igaprep::iga_check

@@ -1,0 +1,520 @@
+#include "igaprep/iga_check/elasticity_solve.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <sstream>
+
+#ifdef IGAPREP_HAVE_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
+
+#include "elasticity_basis.h"
+#include "igaprep/core/error.h"
+#include "igaprep/core/progress.h"
+#include "igaprep/iga_check/elasticity_element.h"
+#include "igaprep/iga_check/elasticity_material.h"
+#include "igaprep/iga_check/elasticity_quadrature.h"
+#include "igaprep/iga_check/elasticity_refine.h"
+#include "igaprep/spline/curve_surface.h"
+#include "igaprep/spline/multipatch_topology.h"
+
+namespace igaprep::iga_check {
+
+namespace {
+
+using SpMat = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+std::string label_list(const spline::MultiPatch& mp) {
+  std::string s;
+  for (size_t i = 0; i < mp.labels.size(); ++i) s += (i ? ", " : "") + mp.labels[i];
+  return s.empty() ? "none" : s;
+}
+
+// Index of a label by name; bad_input naming the known labels otherwise.
+int find_label(const spline::MultiPatch& mp, const std::string& name, const char* what) {
+  for (size_t i = 0; i < mp.labels.size(); ++i)
+    if (mp.labels[i] == name) return static_cast<int>(i);
+  throw bad_input(std::string(what) + ": unknown label '" + name + "' (labels of the model: " + label_list(mp) + ")");
+}
+
+// Boundary sides carrying a label; bad_input when there are none (a label of
+// an interface or an unused label cannot carry a boundary condition).
+std::vector<spline::BoundarySide> sides_with_label(const spline::MultiPatch& mp, const std::string& name,
+                                                   const char* what) {
+  const int label = find_label(mp, name, what);
+  std::vector<spline::BoundarySide> out;
+  for (const auto& b : mp.boundaries)
+    if (b.label == label) out.push_back(b);
+  if (out.empty()) throw bad_input(std::string(what) + ": label '" + name + "' names no boundary side of the model");
+  return out;
+}
+
+struct Gauss {
+  Eigen::VectorXd p, w;
+};
+const Gauss& gauss(int n) {
+  static std::map<int, Gauss> cache;
+  auto it = cache.find(n);
+  if (it != cache.end()) return it->second;
+  Gauss g;
+  gauss_legendre(n, g.p, g.w);
+  return cache.emplace(n, g).first->second;
+}
+
+// 1-D element tables of a patch, built once per direction (tensor structure).
+std::array<std::vector<detail::DirElement>, 3> patch_tables(const spline::Patch& p, int extra) {
+  std::array<std::vector<detail::DirElement>, 3> t;
+  for (int d = 0; d < 3; ++d) {
+    const Gauss& g = gauss(p.degrees[d] + 1 + extra);
+    t[d] = detail::direction_elements(p.knots[d], p.degrees[d], g.p, g.w);
+  }
+  return t;
+}
+
+void check_jacobian(const detail::ElementValues& ev, int patch, double& sign) {
+  for (Eigen::Index q = 0; q < ev.det.size(); ++q) {
+    const double d = ev.det(q);
+    if (sign == 0.0 && d != 0.0 && std::isfinite(d)) sign = d > 0 ? 1.0 : -1.0;
+    if (!(d * sign > 0.0)) {
+      std::ostringstream s;
+      s << "patch " << patch << ": the Jacobian determinant vanishes or changes sign near x = ("
+        << ev.x(q, 0) << ", " << ev.x(q, 1) << ", " << ev.x(q, 2)
+        << "); the model is not valid for analysis (see igaprep check)";
+      throw bad_input(s.str());
+    }
+  }
+}
+
+// Six rigid-body modes against the fixed coefficients, per connected part of
+// the model: a combination of modes that vanishes on every fixed coefficient
+// of a part is a free motion and makes the stiffness singular.
+void check_rigid_modes(const spline::MultiPatch& mp, const spline::GlobalNumbering& num, const Eigen::MatrixXd& X,
+                       const std::vector<unsigned char>& fixed) {
+  const int np = static_cast<int>(mp.patches.size());
+  std::vector<int> parent(np);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int a) {
+    while (parent[a] != a) a = parent[a] = parent[parent[a]];
+    return a;
+  };
+  std::vector<int> owner(num.count, -1);
+  for (int p = 0; p < np; ++p)
+    for (int g : num.global[p]) {
+      if (owner[g] < 0) owner[g] = p;
+      else parent[find(p)] = find(owner[g]);
+    }
+  std::map<int, std::vector<int>> parts;  // root -> patches
+  for (int p = 0; p < np; ++p) parts[find(p)].push_back(p);
+  static const char* names[6] = {"translation in x", "translation in y", "translation in z",
+                                 "rotation about x", "rotation about y", "rotation about z"};
+  for (const auto& [root, patches] : parts) {
+    std::vector<int> cps;
+    for (int g = 0; g < num.count; ++g)
+      if (find(owner[g]) == root) cps.push_back(g);
+    Eigen::Vector3d lo = X.row(cps[0]), hi = lo, c = Eigen::Vector3d::Zero();
+    for (int g : cps) {
+      lo = lo.cwiseMin(X.row(g).transpose());
+      hi = hi.cwiseMax(X.row(g).transpose());
+      c += X.row(g).transpose();
+    }
+    c /= static_cast<double>(cps.size());
+    const double L = std::max((hi - lo).norm(), 1e-300);
+    Eigen::Matrix<double, 6, 6> G = Eigen::Matrix<double, 6, 6>::Zero();
+    for (int g : cps) {
+      const Eigen::Vector3d r = (X.row(g).transpose() - c) / L;
+      for (int i = 0; i < 3; ++i) {
+        if (!fixed[3 * g + i]) continue;
+        Eigen::Matrix<double, 6, 1> row = Eigen::Matrix<double, 6, 1>::Zero();
+        row(i) = 1.0;
+        for (int k = 0; k < 3; ++k) row(3 + k) = Eigen::Vector3d::Unit(k).cross(r)(i);
+        G += row * row.transpose();
+      }
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> es(G);
+    const double tol = 1e-10 * std::max(1.0, es.eigenvalues().maxCoeff());
+    int free_modes = 0;
+    for (int k = 0; k < 6; ++k)
+      if (es.eigenvalues()(k) <= tol) ++free_modes;
+    if (free_modes == 0) continue;
+    const Eigen::Matrix<double, 6, 1> v = es.eigenvectors().col(0);
+    std::string motion;
+    for (int k = 0; k < 6; ++k)
+      if (std::abs(v(k)) > 0.3) motion += (motion.empty() ? "" : " + ") + std::string(names[k]);
+    std::ostringstream s;
+    s << "the constraints leave " << free_modes << " rigid-body motion" << (free_modes > 1 ? "s" : "")
+      << " free (e.g. " << motion << ") in the part of the model made of patch" << (patches.size() > 1 ? "es" : "");
+    for (size_t i = 0; i < patches.size() && i < 10; ++i) s << (i ? ", " : " ") << patches[i];
+    if (patches.size() > 10) s << ", ...";
+    s << "; the stiffness matrix is singular: fix more components (--fix LABEL[:xyz])";
+    throw bad_input(s.str());
+  }
+}
+
+// Lower-triangular scalar stiffness pattern built from the control-point
+// adjacency, and the positions needed to scatter element matrices into it.
+struct Pattern {
+  int ncp = 0;
+  std::vector<int> eq;            // 3*g + i -> equation, or -1 when fixed
+  std::vector<int> free_before;   // 3*g + i -> free components of g before i
+  std::vector<int> free_count;    // per g
+  std::vector<long long> blk_start;  // per column block g: rows r >= g in blk_rows[blk_start[g]..]
+  std::vector<int> blk_rows;
+  std::vector<long long> blk_cum;    // free scalar rows of earlier off-diagonal blocks of the column
+  SpMat K;
+};
+
+void build_pattern(const std::vector<std::vector<int>>& element_cps, int ncp, Pattern& P) {
+  P.ncp = ncp;
+  // control point -> elements
+  std::vector<long long> inc_start(ncp + 1, 0);
+  for (const auto& e : element_cps)
+    for (int g : e) ++inc_start[g + 1];
+  for (int g = 0; g < ncp; ++g) inc_start[g + 1] += inc_start[g];
+  std::vector<int> inc(inc_start[ncp]);
+  {
+    std::vector<long long> fill(inc_start.begin(), inc_start.end() - 1);
+    for (size_t e = 0; e < element_cps.size(); ++e)
+      for (int g : element_cps[e]) inc[fill[g]++] = static_cast<int>(e);
+  }
+  std::vector<int> marker(ncp, -1);
+  P.blk_start.assign(ncp + 1, 0);
+  P.blk_rows.clear();
+  std::vector<int> rows;
+  for (int c = 0; c < ncp; ++c) {
+    rows.clear();
+    for (long long k = inc_start[c]; k < inc_start[c + 1]; ++k)
+      for (int r : element_cps[inc[k]])
+        if (r >= c && marker[r] != c) {
+          marker[r] = c;
+          rows.push_back(r);
+        }
+    std::sort(rows.begin(), rows.end());
+    P.blk_rows.insert(P.blk_rows.end(), rows.begin(), rows.end());
+    P.blk_start[c + 1] = static_cast<long long>(P.blk_rows.size());
+  }
+  // Scalar layout.
+  P.free_before.assign(3 * ncp, 0);
+  P.free_count.assign(ncp, 0);
+  for (int g = 0; g < ncp; ++g)
+    for (int i = 0; i < 3; ++i) {
+      P.free_before[3 * g + i] = P.free_count[g];
+      if (P.eq[3 * g + i] >= 0) ++P.free_count[g];
+    }
+  P.blk_cum.assign(P.blk_rows.size(), 0);
+  const int n = *std::max_element(P.eq.begin(), P.eq.end()) + 1;
+  std::vector<int> outer(n + 1, 0);
+  for (int c = 0; c < ncp; ++c) {
+    long long cum = 0;
+    for (long long k = P.blk_start[c] + 1; k < P.blk_start[c + 1]; ++k) {
+      P.blk_cum[k] = cum;
+      cum += P.free_count[P.blk_rows[k]];
+    }
+    for (int j = 0; j < 3; ++j) {
+      const int col = P.eq[3 * c + j];
+      if (col < 0) continue;
+      int diag = 0;
+      for (int i = j; i < 3; ++i) diag += P.eq[3 * c + i] >= 0;
+      outer[col + 1] = static_cast<int>(diag + cum);
+    }
+  }
+  for (int j = 0; j < n; ++j) {
+    if (static_cast<long long>(outer[j]) + outer[j + 1] > 2147483647LL)
+      throw bad_input("the stiffness matrix has more than 2^31 non-zeros; refine less");
+    outer[j + 1] += outer[j];
+  }
+  P.K = SpMat(n, n);
+  P.K.resizeNonZeros(outer[n]);
+  std::copy(outer.begin(), outer.end(), P.K.outerIndexPtr());
+  int* inner = P.K.innerIndexPtr();
+  std::fill(P.K.valuePtr(), P.K.valuePtr() + outer[n], 0.0);
+  for (int c = 0; c < ncp; ++c)
+    for (int j = 0; j < 3; ++j) {
+      const int col = P.eq[3 * c + j];
+      if (col < 0) continue;
+      int pos = outer[col];
+      for (long long k = P.blk_start[c]; k < P.blk_start[c + 1]; ++k) {
+        const int r = P.blk_rows[k];
+        for (int i = (r == c ? j : 0); i < 3; ++i)
+          if (P.eq[3 * r + i] >= 0) inner[pos++] = P.eq[3 * r + i];
+      }
+    }
+}
+
+// Adds an element matrix (component-blocked, see element_stiffness) to K.
+void scatter(Pattern& P, const std::vector<int>& gid, const Eigen::MatrixXd& Ke) {
+  const int n = static_cast<int>(gid.size());
+  double* val = P.K.valuePtr();
+  const int* outer = P.K.outerIndexPtr();
+  for (int b = 0; b < n; ++b) {
+    const int gb = gid[b];
+    const int* first = P.blk_rows.data() + P.blk_start[gb];
+    const int* last = P.blk_rows.data() + P.blk_start[gb + 1];
+    for (int a = 0; a < n; ++a) {
+      const int ga = gid[a];
+      if (ga < gb) continue;
+      const long long k = std::lower_bound(first, last, ga) - P.blk_rows.data();
+      for (int j = 0; j < 3; ++j) {
+        const int col = P.eq[3 * gb + j];
+        if (col < 0) continue;
+        const long long base = outer[col];
+        if (ga == gb) {
+          int off = 0;
+          for (int i = j; i < 3; ++i) {
+            if (P.eq[3 * ga + i] < 0) continue;
+            val[base + off++] += Ke(i * n + a, j * n + b);
+          }
+        } else {
+          int diag = 0;
+          for (int i = j; i < 3; ++i) diag += P.eq[3 * gb + i] >= 0;
+          const long long row0 = base + diag + P.blk_cum[k];
+          for (int i = 0; i < 3; ++i) {
+            if (P.eq[3 * ga + i] < 0) continue;
+            val[row0 + P.free_before[3 * ga + i]] += Ke(i * n + a, j * n + b);
+          }
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+ElasticitySolution solve_elasticity(const spline::MultiPatch& input, const ElasticityProblem& problem,
+                                    const ElasticityOptions& options) {
+  spline::validate_multipatch(input);
+  if (input.patches.empty()) throw bad_input("the model has no patches");
+  if (options.extra_quadrature < 0 || options.extra_quadrature > 10)
+    throw bad_input("extra quadrature points must lie in 0..10");
+  // Materials and labels first: bad input fails before any work.
+  std::vector<LameParameters> lame;
+  for (size_t m = 0; m < input.materials.size(); ++m)
+    lame.push_back(lame_parameters(input.materials[m].young_modulus, input.materials[m].poisson_ratio,
+                                   "material " + std::to_string(m) + " ('" + input.materials[m].name + "')"));
+  for (size_t p = 0; p < input.patches.size(); ++p)
+    if (input.patches[p].material < 0 || input.patches[p].material >= static_cast<int>(lame.size()))
+      throw bad_input("patch " + std::to_string(p) + ": material index " + std::to_string(input.patches[p].material) +
+                      " has no entry in the model's materials");
+  for (const auto& f : problem.fixed) sides_with_label(input, f.label, "--fix");
+  for (const auto& t : problem.tractions) sides_with_label(input, t.label, "--traction");
+  for (const auto& t : problem.pressures) sides_with_label(input, t.label, "--pressure");
+  if (!problem.body_force.allFinite()) throw bad_input("the body force is not finite");
+  for (const auto& t : problem.tractions)
+    if (!t.traction.allFinite()) throw bad_input("--traction " + t.label + ": not finite");
+  for (const auto& t : problem.pressures)
+    if (!std::isfinite(t.pressure)) throw bad_input("--pressure " + t.label + ": not finite");
+
+  ElasticitySolution sol;
+  ElasticityReport& rep = sol.report;
+  const auto t_assembly = Clock::now();
+  sol.model = refine_for_analysis(input, options.elevate, options.refine);
+  spline::MultiPatch& mp = sol.model;
+  const int np = static_cast<int>(mp.patches.size());
+  const spline::GlobalNumbering num = spline::global_numbering(mp);
+  const int ncp = num.count;
+  Eigen::MatrixXd X(ncp, 3);
+  for (int p = 0; p < np; ++p)
+    for (size_t l = 0; l < num.global[p].size(); ++l) X.row(num.global[p][l]) = mp.patches[p].control_points.row(l);
+
+  // Constraints: the side's control points carry its trace (open knot vectors).
+  std::vector<unsigned char> fixed(3 * static_cast<size_t>(ncp), 0);
+  for (const auto& f : problem.fixed) {
+    if (!f.components[0] && !f.components[1] && !f.components[2])
+      throw bad_input("--fix " + f.label + ": no component chosen");
+    for (const auto& b : sides_with_label(mp, f.label, "--fix"))
+      for (int l : spline::side_control_points(mp.patches[b.patch], b.side))
+        for (int i = 0; i < 3; ++i)
+          if (f.components[i]) fixed[3 * num.global[b.patch][l] + i] = 1;
+  }
+  check_rigid_modes(mp, num, X, fixed);
+
+  Pattern P;
+  P.eq.assign(3 * static_cast<size_t>(ncp), -1);
+  int neq = 0;
+  for (size_t k = 0; k < fixed.size(); ++k)
+    if (!fixed[k]) P.eq[k] = neq++;
+  rep.unknowns = neq;
+  rep.fixed_dofs = static_cast<long long>(fixed.size()) - neq;
+
+  // Elements and their global control points.
+  std::vector<std::array<std::vector<detail::DirElement>, 3>> tables(np);
+  std::vector<std::vector<int>> element_cps;
+  for (int p = 0; p < np; ++p) {
+    const spline::Patch& pa = mp.patches[p];
+    tables[p] = patch_tables(pa, options.extra_quadrature);
+    for (const auto& ew : tables[p][2])
+      for (const auto& ev : tables[p][1])
+        for (const auto& eu : tables[p][0]) {
+          std::vector<int> ids;
+          ids.reserve((pa.degrees[0] + 1) * (pa.degrees[1] + 1) * (pa.degrees[2] + 1));
+          for (int iw = 0; iw <= pa.degrees[2]; ++iw)
+            for (int iv = 0; iv <= pa.degrees[1]; ++iv)
+              for (int iu = 0; iu <= pa.degrees[0]; ++iu)
+                ids.push_back(num.global[p][pa.index(eu.first + iu, ev.first + iv, ew.first + iw)]);
+          element_cps.push_back(std::move(ids));
+        }
+  }
+  rep.elements = static_cast<long long>(element_cps.size());
+  build_pattern(element_cps, ncp, P);
+  rep.nonzeros = P.K.nonZeros();
+
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(neq);
+  const bool has_body = problem.body_force.squaredNorm() > 0.0 || static_cast<bool>(problem.body_force_function);
+  {
+    Progress progress("assembling stiffness", element_cps.size());
+    detail::ElementValues ev;
+    Eigen::MatrixXd Ke, work;
+    size_t e = 0;
+    for (int p = 0; p < np; ++p) {
+      const spline::Patch& pa = mp.patches[p];
+      const LameParameters& lm = lame[pa.material];
+      double sign = 0.0;
+      for (const auto& ew : tables[p][2])
+        for (const auto& evv : tables[p][1])
+          for (const auto& eu : tables[p][0]) {
+            detail::element_values(pa, eu, evv, ew, true, ev);
+            check_jacobian(ev, p, sign);
+            const Eigen::VectorXd wdet = ev.w.cwiseProduct(ev.det.cwiseAbs());
+            rep.quadrature_points += wdet.size();
+            element_stiffness(ev.grad, wdet, lm, Ke, work);
+            const std::vector<int>& gid = element_cps[e];
+            scatter(P, gid, Ke);
+            if (has_body) {
+              const int n = static_cast<int>(gid.size());
+              for (Eigen::Index q = 0; q < wdet.size(); ++q) {
+                Eigen::Vector3d b = problem.body_force;
+                if (problem.body_force_function) b += problem.body_force_function(ev.x.row(q).transpose());
+                for (int a = 0; a < n; ++a)
+                  for (int i = 0; i < 3; ++i) {
+                    const int r = P.eq[3 * gid[a] + i];
+                    if (r >= 0) F(r) += ev.R(q, a) * b(i) * wdet(q);
+                  }
+              }
+            }
+            progress.update(++e);
+          }
+    }
+    progress.finish();
+  }
+
+  // Surface loads: the side's fixed direction is a one-point table at its end.
+  auto add_surface_load = [&](const spline::BoundarySide& b, const Eigen::Vector3d& traction, double pressure) {
+    const spline::Patch& pa = mp.patches[b.patch];
+    const int d = spline::side_direction(b.side);
+    const bool at_max = spline::side_is_max(b.side);
+    const auto t = spline::side_tangent_directions(b.side);
+    const std::vector<double>& U = pa.knots[d];
+    const int nd = pa.count(d);
+    std::vector<detail::DirElement> fixed_dir{
+        detail::direction_point(U, pa.degrees[d], at_max ? U[nd] : U[pa.degrees[d]])};
+    std::array<const std::vector<detail::DirElement>*, 3> dirs;
+    for (int k = 0; k < 3; ++k) dirs[k] = k == d ? &fixed_dir : &tables[b.patch][k];
+    detail::ElementValues ev;
+    for (const auto& ew : *dirs[2])
+      for (const auto& evv : *dirs[1])
+        for (const auto& eu : *dirs[0]) {
+          detail::element_values(pa, eu, evv, ew, false, ev);
+          const int n = static_cast<int>(ev.local.size());
+          for (Eigen::Index q = 0; q < ev.w.size(); ++q) {
+            Eigen::Matrix3d J;
+            for (int c = 0; c < 3; ++c)
+              for (int k = 0; k < 3; ++k) J(c, k) = ev.J(q, 3 * c + k);
+            Eigen::Vector3d nv = J.col(t[0]).cross(J.col(t[1]));
+            const double area = nv.norm();
+            if (area == 0.0) continue;  // a collapsed point of the face carries no load
+            nv /= area;
+            // Outward: against the inward parameter direction at a min side.
+            const double s = nv.dot(J.col(d));
+            if (at_max ? s < 0 : s > 0) nv = -nv;
+            const Eigen::Vector3d tr = traction - pressure * nv;
+            const double dA = area * ev.w(q);
+            for (int a = 0; a < n; ++a) {
+              const int g = num.global[b.patch][ev.local[a]];
+              for (int i = 0; i < 3; ++i) {
+                const int r = P.eq[3 * g + i];
+                if (r >= 0) F(r) += ev.R(q, a) * tr(i) * dA;
+              }
+            }
+          }
+        }
+  };
+  for (const auto& tl : problem.tractions)
+    for (const auto& b : sides_with_label(mp, tl.label, "--traction")) add_surface_load(b, tl.traction, 0.0);
+  for (const auto& pl : problem.pressures)
+    for (const auto& b : sides_with_label(mp, pl.label, "--pressure"))
+      add_surface_load(b, Eigen::Vector3d::Zero(), pl.pressure);
+  rep.assembly_seconds = seconds_since(t_assembly);
+
+  // Solve.
+  const auto t_solve = Clock::now();
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(neq);
+  const char* singular =
+      "the stiffness matrix is not positive definite: the constraints leave a mechanism free "
+      "(e.g. patches that are not connected through interfaces and not fixed) ";
+  if (neq > 0 && options.solver == LinearSolver::Cholesky) {
+#ifdef IGAPREP_HAVE_CHOLMOD
+    Eigen::CholmodDecomposition<SpMat, Eigen::Lower> chol;
+    rep.solver = "cholmod";
+#else
+    Eigen::SimplicialLDLT<SpMat, Eigen::Lower> chol;
+    rep.solver = "simplicial-ldlt";
+#endif
+    chol.compute(P.K);
+    if (chol.info() != Eigen::Success) throw bad_input(std::string(singular) + "(Cholesky factorization failed)");
+#ifndef IGAPREP_HAVE_CHOLMOD
+    if (chol.vectorD().minCoeff() <= 1e-14 * chol.vectorD().cwiseAbs().maxCoeff())
+      throw bad_input(std::string(singular) + "(zero or negative pivot)");
+#endif
+    u = chol.solve(F);
+    if (chol.info() != Eigen::Success || !u.allFinite())
+      throw bad_input(std::string(singular) + "(the solve failed)");
+  } else if (neq > 0) {
+    Eigen::ConjugateGradient<SpMat, Eigen::Lower, Eigen::IncompleteCholesky<double, Eigen::Lower>> cg;
+    rep.solver = "cg-ichol";
+    cg.setTolerance(options.cg_tolerance);
+    cg.setMaxIterations(options.cg_max_iterations > 0 ? options.cg_max_iterations : 10 * neq);
+    cg.compute(P.K);
+    if (cg.info() != Eigen::Success) throw bad_input(std::string(singular) + "(incomplete Cholesky failed)");
+    u = cg.solve(F);
+    rep.cg_iterations = static_cast<int>(cg.iterations());
+    rep.cg_residual = cg.error();
+    if (cg.info() != Eigen::Success || !u.allFinite()) {
+      std::ostringstream s;
+      s << "conjugate gradients did not converge in " << cg.iterations() << " iterations (residual " << cg.error()
+        << "); try --solver cholesky";
+      throw internal_error(s.str());
+    }
+  }
+  rep.solve_seconds = seconds_since(t_solve);
+  const Eigen::VectorXd Ku = P.K.selfadjointView<Eigen::Lower>() * u;
+  rep.strain_energy = 0.5 * u.dot(Ku);
+
+  // Coefficients per patch; fixed components are zero.
+  for (int p = 0; p < np; ++p) {
+    spline::Patch& pa = mp.patches[p];
+    pa.displacement = Eigen::MatrixXd::Zero(pa.control_points.rows(), 3);
+    for (Eigen::Index l = 0; l < pa.displacement.rows(); ++l)
+      for (int i = 0; i < 3; ++i) {
+        const int r = P.eq[3 * num.global[p][l] + i];
+        if (r >= 0) pa.displacement(l, i) = u(r);
+      }
+    if (pa.displacement.rows() > 0)
+      rep.max_displacement = std::max(rep.max_displacement, pa.displacement.rowwise().norm().maxCoeff());
+  }
+  mp.has_solution = true;
+  mp.strain_energy = rep.strain_energy;
+  mp.max_displacement = rep.max_displacement;
+  return sol;
+}
+
+}  // namespace igaprep::iga_check

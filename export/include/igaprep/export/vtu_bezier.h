@@ -1,0 +1,42 @@
+#pragma once
+// VTU (VTK XML UnstructuredGrid, file version 2.2) with one Bezier hexahedron
+// (VTK_BEZIER_HEXAHEDRON = 79) per Bezier element of every patch, for
+// ParaView and VTK >= 9. Points are the element's Bernstein control points
+// from the spline module's Bezier extraction, in the order of
+// vtkHigherOrderHexahedron::PointIndexFromIJK (corners, edges, faces,
+// interior). Points are not shared between cells.
+//
+// Data arrays:
+//  - point data "RationalWeights" (named in <PointData RationalWeights=...>),
+//    1 for B-spline patches;
+//  - cell data "HigherOrderDegrees" (3 components, named in <CellData
+//    HigherOrderDegrees=...>), "material" and "patch" (Int32);
+//  - when the patches carry a displacement: point data "displacement", the
+//    displacement's Bernstein coefficients on the element (exact: the same
+//    rational Bernstein basis as the geometry), and "von_mises", the von Mises
+//    stress of the isotropic linear-elastic material (E, nu of the patch's
+//    material) evaluated at the element's equispaced nodes t = (i/p_u, j/p_v,
+//    k/p_w) and interpolated there by the element's (rational) Bernstein
+//    basis, so VTK reproduces the exact stress at those nodes.
+#include <array>
+#include <ostream>
+#include <string>
+
+#include "igaprep/spline/multipatch.h"
+
+namespace igaprep::exporter {
+
+struct VtuOptions {
+  bool binary = true;  // appended raw binary data; false: ASCII (readable, larger)
+};
+
+// Inputs: model (every degree >= 1). Output: the VTU text on `out`.
+void write_vtu_bezier(const spline::MultiPatch& model, std::ostream& out, const VtuOptions& options = {});
+void write_vtu_bezier(const spline::MultiPatch& model, const std::string& path,
+                      const VtuOptions& options = {});  // atomic
+
+// VTK's point index of Bernstein node (i, j, k) of a hexahedron of the given
+// degrees (vtkHigherOrderHexahedron::PointIndexFromIJK, VTK 9 numbering).
+int vtk_hex_point_index(int i, int j, int k, const std::array<int, 3>& degrees);
+
+}  // namespace igaprep::exporter

@@ -1,6 +1,7 @@
 #pragma once
 // Small helpers shared by the param sources (not installed).
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products
 
 #include "igaprep/param/gradient.h"
 

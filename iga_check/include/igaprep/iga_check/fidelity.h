@@ -1,0 +1,51 @@
+#pragma once
+// Fidelity of a model to its input surfaces: how far the spline faces that
+// stand for an input surface (boundary sides labelled with it, material
+// interfaces lying on it) are from that triangle mesh, measured both ways:
+//  - spline -> mesh: samples of the spline faces (a regular grid per face
+//    element) to the triangle mesh, exact point-triangle distances (CGAL AABB tree);
+//  - mesh -> spline: every mesh vertex to the spline faces: the nearest point
+//    of a fine tessellation of the faces (CGAL AABB tree) refined by a
+//    Gauss-Newton projection onto the spline face itself.
+// Surface i of the list is the model's label i (label 0 = outer surface T1,
+// ARCHITECTURE.md), so surfaces are given outermost first.
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "igaprep/mesh/tri_mesh.h"
+#include "igaprep/spline/multipatch.h"
+
+namespace igaprep::iga_check {
+
+struct FidelityOptions {
+  int samples_per_element = 9;       // per direction, per face element (ends included)
+  int tessellation_per_element = 8;  // quads per direction, per face element
+  int newton_iterations = 20;
+};
+
+struct DistanceStats {
+  long samples = 0;
+  double max = 0.0, mean = 0.0, p95 = 0.0;                    // model units
+  double max_relative = 0.0, mean_relative = 0.0, p95_relative = 0.0;  // / bounding-box diagonal
+  Eigen::Vector3d max_location = Eigen::Vector3d::Zero();    // the sample farthest away
+};
+
+struct SurfaceFidelity {
+  int surface = -1;                  // index into the surface list = model label
+  std::string label;                 // the model's label name ("" when absent)
+  int boundary_faces = 0, interface_faces = 0;  // spline faces that stand for it
+  DistanceStats spline_to_mesh, mesh_to_spline;
+};
+
+// Diagonal of the bounding box of the model's points (evaluated on a 3^3 grid
+// per element, so curved patches are not judged by their control hull).
+double model_diagonal(const spline::MultiPatch& mp);
+
+// Inputs: model, input surfaces (outermost first, index = label), the length
+// that relative distances divide by (model_diagonal when <= 0).
+// Output: one entry per surface that at least one spline face stands for.
+std::vector<SurfaceFidelity> fidelity(const spline::MultiPatch& mp, const std::vector<mesh::TriMesh>& surfaces,
+                                      double diagonal = 0.0, const FidelityOptions& options = {});
+
+}  // namespace igaprep::iga_check

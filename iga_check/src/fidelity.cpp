@@ -1,0 +1,218 @@
+#include "igaprep/iga_check/fidelity.h"
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "igaprep/core/error.h"
+#include "igaprep/spline/curve_surface.h"
+#include "igaprep/spline/evaluate.h"
+#include "igaprep/spline/knot_vector.h"
+
+namespace igaprep::iga_check {
+
+namespace {
+
+using K = CGAL::Simple_cartesian<double>;
+using Triangles = std::vector<K::Triangle_3>;
+using Primitive = CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+
+K::Point_3 pt(const Eigen::Vector3d& x) { return K::Point_3(x[0], x[1], x[2]); }
+Eigen::Vector3d vec(const K::Point_3& p) { return Eigen::Vector3d(p.x(), p.y(), p.z()); }
+
+// n points per element in each direction, shared element ends once.
+std::vector<double> element_grid(const std::vector<double>& U, int n) {
+  const std::vector<double> brk = spline::unique_knots(U);
+  std::vector<double> out;
+  for (size_t e = 0; e + 1 < brk.size(); ++e)
+    for (int i = (e == 0 ? 0 : 1); i < n; ++i) out.push_back(brk[e] + (brk[e + 1] - brk[e]) * i / (n - 1));
+  return out;
+}
+
+DistanceStats summarize(std::vector<double> d, const std::vector<Eigen::Vector3d>& where, double diag) {
+  DistanceStats s;
+  s.samples = static_cast<long>(d.size());
+  if (d.empty()) return s;
+  size_t arg = 0;
+  double sum = 0.0;
+  for (size_t i = 0; i < d.size(); ++i) {
+    sum += d[i];
+    if (d[i] > d[arg]) arg = i;
+  }
+  s.max = d[arg];
+  s.max_location = where[arg];
+  s.mean = sum / d.size();
+  std::sort(d.begin(), d.end());
+  const size_t k = static_cast<size_t>(std::ceil(0.95 * d.size())) - 1;
+  s.p95 = d[std::min(k, d.size() - 1)];
+  s.max_relative = s.max / diag;
+  s.mean_relative = s.mean / diag;
+  s.p95_relative = s.p95 / diag;
+  return s;
+}
+
+struct Face {
+  spline::Surface surface;
+  std::array<std::pair<double, double>, 2> domain;
+};
+
+// Gauss-Newton (with a tiny Levenberg term for collapsed edges) for the point
+// of the face nearest x, from the parameter guess uv; returns the distance.
+double project(const Face& f, const Eigen::Vector3d& x, Eigen::Vector2d uv, int iterations) {
+  double best = (spline::evaluate_point(f.surface, uv) - x).norm();
+  for (int it = 0; it < iterations; ++it) {
+    const Eigen::Vector3d r = x - spline::evaluate_point(f.surface, uv);
+    const Eigen::Matrix<double, 3, 2> J = spline::evaluate_jacobian(f.surface, uv);
+    Eigen::Matrix2d A = J.transpose() * J;
+    A.diagonal().array() += 1e-12 * (A.trace() + 1e-300);
+    Eigen::Vector2d step = A.ldlt().solve(J.transpose() * r);
+    if (!step.allFinite()) break;
+    Eigen::Vector2d next = uv + step;
+    for (int d = 0; d < 2; ++d) next[d] = std::clamp(next[d], f.domain[d].first, f.domain[d].second);
+    const double dist = (spline::evaluate_point(f.surface, next) - x).norm();
+    if (dist > best) break;  // no progress: keep the best point
+    const double moved = (next - uv).norm();
+    uv = next;
+    best = dist;
+    if (moved < 1e-14) break;
+  }
+  return best;
+}
+
+}  // namespace
+
+double model_diagonal(const spline::MultiPatch& mp) {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const spline::Patch& p : mp.patches) {
+    std::array<std::vector<double>, 3> params;
+    for (int d = 0; d < 3; ++d) params[d] = element_grid(p.knots[d], 3);
+    const Eigen::MatrixXd X = spline::evaluate_grid_points(p, spline::grid_basis(p, params, 0));
+    for (int i = 0; i < X.rows(); ++i) {
+      lo = lo.cwiseMin(X.row(i).transpose());
+      hi = hi.cwiseMax(X.row(i).transpose());
+    }
+  }
+  return mp.patches.empty() ? 0.0 : (hi - lo).norm();
+}
+
+std::vector<SurfaceFidelity> fidelity(const spline::MultiPatch& mp, const std::vector<mesh::TriMesh>& surfaces,
+                                      double diagonal, const FidelityOptions& options) {
+  if (options.samples_per_element < 2 || options.tessellation_per_element < 1)
+    throw bad_input("fidelity: samples_per_element must be >= 2 and tessellation_per_element >= 1");
+  if (!(diagonal > 0.0)) diagonal = model_diagonal(mp);
+  if (!(diagonal > 0.0)) throw bad_input("fidelity: the model has no extent");
+  std::vector<SurfaceFidelity> out;
+  for (size_t si = 0; si < surfaces.size(); ++si) {
+    const mesh::TriMesh& tm = surfaces[si];
+    SurfaceFidelity sf;
+    sf.surface = static_cast<int>(si);
+    if (si < mp.labels.size()) sf.label = mp.labels[si];
+    std::vector<Face> faces;
+    auto add_face = [&](int patch, int side) {
+      if (patch < 0 || patch >= static_cast<int>(mp.patches.size()))
+        throw bad_input("fidelity: side refers to patch " + std::to_string(patch) + ", which does not exist");
+      Face f;
+      f.surface = spline::boundary_surface(mp.patches[patch], side);
+      for (int d = 0; d < 2; ++d) {
+        const auto& U = f.surface.knots[d];
+        const int p = f.surface.degrees[d];
+        f.domain[d] = {U[p], U[U.size() - p - 1]};
+      }
+      faces.push_back(std::move(f));
+    };
+    for (const auto& b : mp.boundaries)
+      if (b.label == static_cast<int>(si)) {
+        add_face(b.patch, b.side);
+        ++sf.boundary_faces;
+      }
+    for (const auto& itf : mp.interfaces)
+      if (itf.surface == static_cast<int>(si)) {
+        add_face(itf.patch_a, itf.side_a);
+        ++sf.interface_faces;
+      }
+    if (faces.empty()) continue;
+    if (tm.F.rows() == 0) throw bad_input("fidelity: input surface " + std::to_string(si) + " has no triangles");
+
+    // spline -> mesh
+    Triangles mesh_tris;
+    mesh_tris.reserve(tm.F.rows());
+    for (int f = 0; f < tm.F.rows(); ++f)
+      mesh_tris.emplace_back(pt(tm.V.row(tm.F(f, 0))), pt(tm.V.row(tm.F(f, 1))), pt(tm.V.row(tm.F(f, 2))));
+    Tree mesh_tree(mesh_tris.begin(), mesh_tris.end());
+    mesh_tree.accelerate_distance_queries();
+    std::vector<double> d1;
+    std::vector<Eigen::Vector3d> w1;
+    for (const Face& f : faces) {
+      std::array<std::vector<double>, 2> params{{element_grid(f.surface.knots[0], options.samples_per_element),
+                                                 element_grid(f.surface.knots[1], options.samples_per_element)}};
+      const spline::GridEvaluation ev = spline::evaluate_grid(f.surface, params, 0);
+      for (int i = 0; i < ev.points.rows(); ++i) {
+        const Eigen::Vector3d x = ev.points.row(i).transpose();
+        d1.push_back(std::sqrt(mesh_tree.squared_distance(pt(x))));
+        w1.push_back(x);
+      }
+    }
+    sf.spline_to_mesh = summarize(d1, w1, diagonal);
+
+    // mesh -> spline: tessellate the faces, remember each triangle's parameters.
+    Triangles tess;
+    std::vector<std::pair<int, std::array<Eigen::Vector2d, 3>>> tess_uv;
+    for (size_t fi = 0; fi < faces.size(); ++fi) {
+      const Face& f = faces[fi];
+      std::array<std::vector<double>, 2> params{
+          {element_grid(f.surface.knots[0], options.tessellation_per_element + 1),
+           element_grid(f.surface.knots[1], options.tessellation_per_element + 1)}};
+      const spline::GridEvaluation ev = spline::evaluate_grid(f.surface, params, 0);
+      const int nu = static_cast<int>(params[0].size()), nv = static_cast<int>(params[1].size());
+      for (int j = 0; j + 1 < nv; ++j)
+        for (int i = 0; i + 1 < nu; ++i) {
+          const int a = i + nu * j, b = a + 1, c = a + nu, d = c + 1;
+          const Eigen::Vector2d ua(params[0][i], params[1][j]), ub(params[0][i + 1], params[1][j]),
+              uc(params[0][i], params[1][j + 1]), ud(params[0][i + 1], params[1][j + 1]);
+          auto P = [&](int r) { return pt(ev.points.row(r).transpose()); };
+          tess.emplace_back(P(a), P(b), P(d));
+          tess_uv.push_back({static_cast<int>(fi), {ua, ub, ud}});
+          tess.emplace_back(P(a), P(d), P(c));
+          tess_uv.push_back({static_cast<int>(fi), {ua, ud, uc}});
+        }
+    }
+    Tree tess_tree(tess.begin(), tess.end());
+    tess_tree.accelerate_distance_queries();
+    std::vector<double> d2;
+    std::vector<Eigen::Vector3d> w2;
+    for (int v = 0; v < tm.V.rows(); ++v) {
+      const Eigen::Vector3d x = tm.V.row(v).transpose();
+      const auto hit = tess_tree.closest_point_and_primitive(pt(x));
+      const size_t t = static_cast<size_t>(hit.second - tess.cbegin());
+      const K::Triangle_3& tri = tess[t];
+      // Barycentric coordinates of the closest point give the parameter guess.
+      const Eigen::Vector3d a = vec(tri[0]), b = vec(tri[1]), c = vec(tri[2]), q = vec(hit.first);
+      const Eigen::Vector3d e0 = b - a, e1 = c - a, r = q - a;
+      const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1), d20 = r.dot(e0), d21 = r.dot(e1);
+      const double den = d00 * d11 - d01 * d01;
+      double s = 0.0, u = 0.0;
+      if (den > 0.0) {
+        s = (d11 * d20 - d01 * d21) / den;
+        u = (d00 * d21 - d01 * d20) / den;
+      }
+      const auto& uvs = tess_uv[t].second;
+      const Eigen::Vector2d guess = (1.0 - s - u) * uvs[0] + s * uvs[1] + u * uvs[2];
+      const double dist = project(faces[tess_uv[t].first], x, guess, options.newton_iterations);
+      d2.push_back(dist);
+      w2.push_back(x);
+    }
+    sf.mesh_to_spline = summarize(d2, w2, diagonal);
+    out.push_back(std::move(sf));
+  }
+  return out;
+}
+
+}  // namespace igaprep::iga_check

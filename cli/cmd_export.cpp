@@ -1,0 +1,32 @@
+// igaprep export MODEL.h5 --to FORMAT[,FORMAT...] -o BASENAME
+// Reads an igaprep HDF5 model and writes it in the formats IGA solvers and
+// viewers read; every file is written atomically.
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "commands.h"
+#include "igaprep/export/export_model.h"
+#include "igaprep/export/hdf5_model.h"
+
+namespace igaprep::cli {
+
+void add_export_command(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand(
+      "export", "Write an igaprep HDF5 model as hdf5 (.h5), gismo (.xml), mfem (.mesh), vtu (.vtu) or bext (.bext)");
+  auto model = std::make_shared<std::string>();
+  auto formats = std::make_shared<std::string>();
+  auto basename = std::make_shared<std::string>();
+  sub->add_option("model", *model, "input model, igaprep HDF5 (MODEL.h5)")->required();
+  sub->add_option("--to", *formats, "comma-separated formats: hdf5, gismo, mfem, vtu, bext")->required();
+  sub->add_option("-o,--output", *basename, "output base name; each format adds its extension")->required();
+  set_body(sub, [=] {
+    // Formats first: a typo is reported before any file is read or written.
+    const std::vector<exporter::Format> list = exporter::parse_formats(*formats);
+    const spline::MultiPatch mp = exporter::read_hdf5_model(*model);
+    for (const std::string& path : exporter::export_model(mp, *basename, list)) std::cout << "wrote " << path << "\n";
+    return 0;
+  });
+}
+
+}  // namespace igaprep::cli

@@ -1,0 +1,26 @@
+#pragma once
+// One call that writes a model in several file formats (the `igaprep export`
+// command): BASENAME.h5 (igaprep HDF5), .xml (G+Smo), .mesh (MFEM NURBS),
+// .vtu (VTK Bezier hexahedra), .bext (LS-DYNA / Coreform BEXT 2.0).
+#include <string>
+#include <vector>
+
+#include "igaprep/spline/multipatch.h"
+
+namespace igaprep::exporter {
+
+enum class Format { Hdf5, Gismo, Mfem, Vtu, Bext };
+
+// "hdf5,gismo,vtu" -> formats in the given order, duplicates dropped.
+// Throws bad_input naming an unknown format and listing the known ones.
+std::vector<Format> parse_formats(const std::string& comma_separated);
+
+std::string format_name(Format f);       // "hdf5", "gismo", ...
+std::string format_extension(Format f);  // ".h5", ".xml", ".mesh", ".vtu", ".bext"
+
+// Writes BASENAME + extension for each format, each file atomically.
+// Returns the paths written, in order.
+std::vector<std::string> export_model(const spline::MultiPatch& model, const std::string& basename,
+                                      const std::vector<Format>& formats);
+
+}  // namespace igaprep::exporter

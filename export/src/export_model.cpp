@@ -1,0 +1,82 @@
+#include "igaprep/export/export_model.h"
+
+#include <algorithm>
+
+#include "igaprep/core/error.h"
+#include "igaprep/export/bext.h"
+#include "igaprep/export/gismo_xml.h"
+#include "igaprep/export/hdf5_model.h"
+#include "igaprep/export/mfem_mesh.h"
+#include "igaprep/export/vtu_bezier.h"
+
+namespace igaprep::exporter {
+
+namespace {
+constexpr Format kAll[] = {Format::Hdf5, Format::Gismo, Format::Mfem, Format::Vtu, Format::Bext};
+}
+
+std::string format_name(Format f) {
+  switch (f) {
+    case Format::Hdf5: return "hdf5";
+    case Format::Gismo: return "gismo";
+    case Format::Mfem: return "mfem";
+    case Format::Vtu: return "vtu";
+    case Format::Bext: return "bext";
+  }
+  return "?";
+}
+
+std::string format_extension(Format f) {
+  switch (f) {
+    case Format::Hdf5: return ".h5";
+    case Format::Gismo: return ".xml";
+    case Format::Mfem: return ".mesh";
+    case Format::Vtu: return ".vtu";
+    case Format::Bext: return ".bext";
+  }
+  return "";
+}
+
+std::vector<Format> parse_formats(const std::string& list) {
+  std::vector<Format> out;
+  size_t start = 0;
+  while (start <= list.size()) {
+    size_t end = list.find(',', start);
+    if (end == std::string::npos) end = list.size();
+    std::string word = list.substr(start, end - start);
+    word.erase(0, word.find_first_not_of(" \t"));
+    word.erase(word.find_last_not_of(" \t") + 1);
+    start = end + 1;
+    if (word.empty()) continue;
+    std::string lower = word;
+    std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+    bool found = false;
+    for (Format f : kAll)
+      if (format_name(f) == lower) {
+        if (std::find(out.begin(), out.end(), f) == out.end()) out.push_back(f);
+        found = true;
+      }
+    if (!found) throw bad_input("unknown export format '" + word + "' (known: hdf5, gismo, mfem, vtu, bext)");
+  }
+  if (out.empty()) throw bad_input("no export format given (known: hdf5, gismo, mfem, vtu, bext)");
+  return out;
+}
+
+std::vector<std::string> export_model(const spline::MultiPatch& model, const std::string& basename,
+                                      const std::vector<Format>& formats) {
+  std::vector<std::string> written;
+  for (Format f : formats) {
+    const std::string path = basename + format_extension(f);
+    switch (f) {
+      case Format::Hdf5: write_hdf5_model(model, path); break;
+      case Format::Gismo: write_gismo_xml(model, path); break;
+      case Format::Mfem: write_mfem_mesh(model, path); break;
+      case Format::Vtu: write_vtu_bezier(model, path); break;
+      case Format::Bext: write_bext(model, path); break;
+    }
+    written.push_back(path);
+  }
+  return written;
+}
+
+}  // namespace igaprep::exporter

@@ -1,0 +1,126 @@
+// Case files through the CLI: errors that name the key, tetmesh, model, run.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "cli/cli_runner.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string scratch_dir(const std::string& name) {
+  const fs::path dir = fs::path(IGAPREP_BINARY_DIR) / "tests" / "cli_scratch" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir.string();
+}
+
+std::string write_case(const std::string& dir, const std::string& json) {
+  const std::string path = dir + "/case.json";
+  std::ofstream(path) << json;
+  return path;
+}
+
+std::string read_all(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string surfaces_key() { return R"("surfaces": [")" + models_dir() + R"(/sphere2/outer.off"])"; }
+
+TEST(CaseCli, UnknownKeyIsNamed) {
+  const auto dir = scratch_dir("unknown_key");
+  const auto path = write_case(dir, "{" + surfaces_key() + R"(, "tetmesh": {"radius_edge": 2}})");
+  const auto r = run_cli("tetmesh " + path);
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("unknown key 'tetmesh.radius_edge'"), std::string::npos) << r.out;
+}
+
+TEST(CaseCli, WrongTypeIsNamed) {
+  const auto dir = scratch_dir("wrong_type");
+  const auto path = write_case(dir, "{" + surfaces_key() + R"(, "tetmesh": {"max_volume": "big"}})");
+  const auto r = run_cli("tetmesh " + path);
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("'tetmesh.max_volume' must be a number"), std::string::npos) << r.out;
+}
+
+TEST(CaseCli, MissingSurfaceFileIsNamed) {
+  const auto dir = scratch_dir("missing_file");
+  const auto path = write_case(dir, R"({"surfaces": ["nowhere.stl"]})");
+  const auto r = run_cli("tetmesh " + path);
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("surfaces[0]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("nowhere.stl"), std::string::npos) << r.out;
+}
+
+TEST(CaseCli, MaterialCountMustMatchSurfaces) {
+  const auto dir = scratch_dir("materials");
+  const auto path = write_case(dir, "{" + surfaces_key() +
+      R"(, "materials": [{"name": "a", "young_modulus": 1, "poisson_ratio": 0.3}, {"name": "b", "young_modulus": 1, "poisson_ratio": 0.3}]})");
+  const auto r = run_cli("tetmesh " + path);
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("'materials' has 2 entries but there are 1 surfaces"), std::string::npos) << r.out;
+}
+
+TEST(CaseCli, PoissonRatioOfOneHalfIsRefused) {
+  const auto dir = scratch_dir("poisson");
+  const auto path = write_case(dir, "{" + surfaces_key() +
+      R"(, "materials": [{"name": "a", "young_modulus": 1, "poisson_ratio": 0.5}]})");
+  const auto r = run_cli("tetmesh " + path);
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("materials[0].poisson_ratio"), std::string::npos) << r.out;
+}
+
+TEST(CaseCli, TetmeshOfSphere2FillsBothMaterialsAndWritesVtu) {
+  const auto dir = scratch_dir("tetmesh");
+  const auto r = run_cli("tetmesh " + models_dir() + "/sphere2/case.json -o " + dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_TRUE(fs::exists(dir + "/tetmesh.vtu"));
+  // The printed total volume equals the outer surface's enclosed volume.
+  const auto check = run_cli("check-mesh --json " + models_dir() + "/sphere2/outer.off");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m, std::regex("volume ([0-9.e+-]+) \\(radius-edge")));
+  const double tet_volume = std::stod(m[1]);
+  std::smatch v;
+  ASSERT_TRUE(std::regex_search(check.out, v, std::regex("\"volume\": ([0-9.e+-]+)")));
+  EXPECT_NEAR(tet_volume, std::stod(v[1]), 1e-5 * tet_volume);  // printed with 6 digits
+  EXPECT_NE(r.out.find("material 0 (shell)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("material 1 (core)"), std::string::npos) << r.out;
+}
+
+TEST(CaseCli, ModelCommandWritesExactlyTheCommittedFiles) {
+  for (const std::string name : {"sphere2", "ring2", "torus3"}) {
+    const auto dir = scratch_dir("model_" + name);
+    const auto r = run_cli("model " + name + " -o " + dir);
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    int compared = 0;
+    for (const auto& entry : fs::directory_iterator(models_dir() + "/" + name)) {
+      if (!entry.is_regular_file()) continue;
+      const std::string file = entry.path().filename().string();
+      EXPECT_EQ(read_all(dir + "/" + file), read_all(entry.path().string())) << name << "/" << file;
+      ++compared;
+    }
+    EXPECT_GE(compared, 2) << name;
+  }
+}
+
+TEST(CaseCli, RunWithoutCaseUsesTheDefaultModel) {
+  const auto dir = scratch_dir("run_default");
+  const auto r = run_cli("run -o " + dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("case 'ring2'"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("tetmesh"), std::string::npos) << r.out;
+}
+
+TEST(CaseCli, UnknownCommandIsAUsageError) {
+  const auto r = run_cli("frobnicate");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+}
+
+}  // namespace

@@ -108,7 +108,21 @@ void build_grid(const spline::MultiPatch& model, Grid& g) {
     for (int ew = 0; ew < ex.element_count(2); ++ew)
       for (int ev = 0; ev < ex.element_count(1); ++ev)
         for (int eu = 0; eu < ex.element_count(0); ++eu) {
-          const spline::BezierElement be = spline::bernstein_control_points(p, ex, eu, ev, ew);
+          // Bernstein points C^T P (homogeneous). spline::bernstein_control_points
+          // gives the same but rebuilds the patch's homogeneous points per call.
+          const Eigen::MatrixXd C = spline::element_extraction_operator(ex, eu, ev, ew);
+          const std::vector<int> local = spline::element_control_points(p, ex, eu, ev, ew);
+          Eigen::MatrixXd hp(local.size(), 4);
+          for (size_t r = 0; r < local.size(); ++r) {
+            const double w = p.rational() ? p.weights[local[r]] : 1.0;
+            hp.row(r) << p.control_points.row(local[r]) * w, w;
+          }
+          const Eigen::MatrixXd hb = C.transpose() * hp;
+          spline::BezierElement be;
+          be.points = hb.leftCols<3>().array().colwise() / hb.col(3).array();
+          if (p.rational()) be.weights = hb.col(3);
+          const int el[3] = {eu, ev, ew};
+          for (int d = 0; d < 3; ++d) be.domain[d] = {{ex.dirs[d].breaks[el[d]], ex.dirs[d].breaks[el[d] + 1]}};
           const int64_t base = static_cast<int64_t>(g.weights.size());
           g.points.resize(g.points.size() + 3 * nb);
           g.weights.resize(g.weights.size() + nb);
@@ -127,8 +141,6 @@ void build_grid(const spline::MultiPatch& model, Grid& g) {
           g.von_mises.resize(g.von_mises.size() + nb, 0.0);
           if (!has_u) continue;
           // Displacement: Bernstein coefficients, homogeneous like the geometry.
-          const Eigen::MatrixXd C = spline::element_extraction_operator(ex, eu, ev, ew);
-          const std::vector<int> local = spline::element_control_points(p, ex, eu, ev, ew);
           Eigen::MatrixXd hu(local.size(), 3);
           for (size_t r = 0; r < local.size(); ++r)
             hu.row(r) = p.displacement.row(local[r]) * (p.rational() ? p.weights[local[r]] : 1.0);
@@ -185,6 +197,8 @@ void build_grid(const spline::MultiPatch& model, Grid& g) {
 }
 
 // One <DataArray>: ASCII inline, or an entry of the appended raw block.
+// Binary arrays are remembered by address (no copy) and streamed by
+// finish(); they must stay alive until then.
 class ArrayWriter {
  public:
   ArrayWriter(std::ostream& out, bool binary) : out_(out), binary_(binary) {}
@@ -195,12 +209,10 @@ class ArrayWriter {
     out_ << indent << "<DataArray type=\"" << type << "\" Name=\"" << name << "\"";
     if (components > 1) out_ << " NumberOfComponents=\"" << components << "\"";
     if (binary_) {
-      out_ << " format=\"appended\" offset=\"" << appended_.size() << "\"/>\n";
       const uint64_t bytes = v.size() * sizeof(T);
-      const size_t at = appended_.size();
-      appended_.resize(at + sizeof(uint64_t) + bytes);
-      std::memcpy(appended_.data() + at, &bytes, sizeof(uint64_t));
-      if (bytes) std::memcpy(appended_.data() + at + sizeof(uint64_t), v.data(), bytes);
+      out_ << " format=\"appended\" offset=\"" << offset_ << "\"/>\n";
+      blocks_.push_back({reinterpret_cast<const char*>(v.data()), bytes});
+      offset_ += sizeof(uint64_t) + bytes;
       return;
     }
     out_ << " format=\"ascii\">\n";
@@ -215,14 +227,18 @@ class ArrayWriter {
   void finish() {
     if (!binary_) return;
     out_ << " <AppendedData encoding=\"raw\">\n_";
-    out_.write(appended_.data(), static_cast<std::streamsize>(appended_.size()));
+    for (const auto& [data, bytes] : blocks_) {
+      out_.write(reinterpret_cast<const char*>(&bytes), sizeof(uint64_t));
+      if (bytes) out_.write(data, static_cast<std::streamsize>(bytes));
+    }
     out_ << "\n </AppendedData>\n";
   }
 
  private:
   std::ostream& out_;
   bool binary_;
-  std::vector<char> appended_;
+  uint64_t offset_ = 0;
+  std::vector<std::pair<const char*, uint64_t>> blocks_;
 };
 
 bool little_endian() {

@@ -1,0 +1,199 @@
+#include "igaprep/mesh/offset_surface.h"
+
+#include <CGAL/Labeled_mesh_domain_3.h>
+#include <CGAL/Mesh_complex_3_in_triangulation_3.h>
+#include <CGAL/Mesh_criteria_3.h>
+#include <CGAL/Mesh_triangulation_3.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Random.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/facets_in_complex_3_to_triangle_mesh.h>
+#include <CGAL/refine_mesh_3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "cgal_surface.h"
+#include "igaprep/core/error.h"
+
+namespace igaprep::mesh {
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using detail::Kernel;
+using detail::Point3;
+using detail::SurfaceMesh;
+using Side = CGAL::Side_of_triangle_mesh<SurfaceMesh, Kernel>;
+using Tree = Side::AABB_tree;
+using Domain = CGAL::Labeled_mesh_domain_3<Kernel>;
+using Tr = CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type;
+using C3t3 = CGAL::Mesh_complex_3_in_triangulation_3<Tr>;
+using Criteria = CGAL::Mesh_criteria_3<Tr>;
+
+std::string fmt(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
+
+double mean_edge_length(const TriMesh& m) {
+  double sum = 0;
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    for (int c = 0; c < 3; ++c) sum += (m.V.row(m.F(f, c)) - m.V.row(m.F(f, (c + 1) % 3))).norm();
+  return sum / (3.0 * m.F.rows());
+}
+
+// Signed offset function: negative strictly deeper than D inside the surface.
+struct OffsetFunction {
+  const Tree* tree;
+  const Side* side;
+  double distance;
+  double operator()(const Point3& p) const {
+    const double d = std::sqrt(CGAL::to_double(tree->squared_distance(p)));
+    // Within D of the surface the value is positive on either side, so the
+    // (costlier) inside test is needed only farther away.
+    if (d < distance) return distance - d;  // inside or outside: both > 0 here
+    return (*side)(p) == CGAL::ON_BOUNDED_SIDE ? distance - d : distance + d;
+  }
+};
+
+// Local thickness under each input vertex: length of the inward ray to the
+// next hit of the surface. Used only to suggest a working D.
+double thickness_percentile(const SurfaceMesh& sm, const Tree& tree, double eps, double q) {
+  std::vector<double> t;
+  auto vnormals = sm.property_map<SurfaceMesh::Vertex_index, Kernel::Vector_3>("v:offset_normal").first;
+  for (auto v : sm.vertices()) {
+    const Kernel::Vector_3 n = vnormals[v];
+    const Point3 p = sm.point(v) - eps * n;
+    const Kernel::Ray_3 ray(p, -n);
+    auto hit = tree.first_intersection(ray);
+    if (!hit) continue;
+    if (const Point3* q3 = boost::get<Point3>(&hit->first)) t.push_back(std::sqrt(CGAL::squared_distance(p, *q3)));
+  }
+  if (t.empty()) return 0;
+  std::sort(t.begin(), t.end());
+  return t[static_cast<std::size_t>(q * (t.size() - 1))];
+}
+
+}  // namespace
+
+TriMesh offset_inward(const TriMesh& surface, const OffsetOptions& options) {
+  const double D = options.distance;
+  if (!(D > 0) || !std::isfinite(D)) throw bad_input("offset_inward: the offset distance must be positive, got " + fmt(D));
+  if (surface.F.rows() < 4) throw bad_input("offset_inward: the surface has fewer than 4 triangles");
+  SurfaceMesh sm = detail::to_surface_mesh(surface, "offset_inward: input surface");
+  if (!CGAL::is_closed(sm)) throw bad_input("offset_inward: the input surface is not closed");
+  const detail::SurfaceTopology topo_in = detail::surface_topology(surface);
+  const double h = options.edge_length > 0 ? options.edge_length : mean_edge_length(surface);
+
+  const Eigen::RowVector3d lo = surface.V.colwise().minCoeff(), hi = surface.V.colwise().maxCoeff();
+  const double diag = (hi - lo).norm();
+
+  // Everything below uses fixed seeds so the same input gives the same output.
+  CGAL::get_default_random() = CGAL::Random(0);
+  CGAL::Random rng(0);
+
+  Tree tree(faces(sm).first, faces(sm).second, sm);
+  tree.accelerate_distance_queries();
+  Side side(tree);
+  OffsetFunction f{&tree, &side, D};
+
+  const Eigen::RowVector3d center = 0.5 * (lo + hi);
+  const Point3 c(center(0), center(1), center(2));
+  const double radius = 0.5 * diag * 1.05;
+  Domain domain = Domain::create_implicit_mesh_domain(
+      f, Kernel::Sphere_3(c, radius * radius),
+      CGAL::parameters::relative_error_bound = 1e-6, CGAL::parameters::p_rng = &rng);
+
+  // Seeds: under each input vertex, where the function changes sign between
+  // depth D/2 and 3D/2 along the inward normal, keeping seeds about 0.7 h apart.
+  auto vnormals = sm.add_property_map<SurfaceMesh::Vertex_index, Kernel::Vector_3>("v:offset_normal").first;
+  PMP::compute_vertex_normals(sm, vnormals);
+  C3t3 c3t3;
+  {
+    const double spacing = 0.7 * h;
+    std::unordered_map<std::uint64_t, std::vector<Point3>> grid;
+    auto cell_of = [&](const Point3& p, int dx, int dy, int dz) {
+      const std::uint64_t ix = static_cast<std::uint64_t>(std::floor((p.x() - lo(0)) / spacing) + 2 + dx);
+      const std::uint64_t iy = static_cast<std::uint64_t>(std::floor((p.y() - lo(1)) / spacing) + 2 + dy);
+      const std::uint64_t iz = static_cast<std::uint64_t>(std::floor((p.z() - lo(2)) / spacing) + 2 + dz);
+      return (ix * 1000003ULL + iy) * 1000003ULL + iz;
+    };
+    auto intersect = domain.construct_intersection_object();
+    auto cwp = c3t3.triangulation().geom_traits().construct_weighted_point_3_object();
+    for (auto v : sm.vertices()) {
+      const Kernel::Vector_3 n = vnormals[v];
+      const Point3 a = sm.point(v) - 0.5 * D * n, b = sm.point(v) - 1.5 * D * n;
+      if (!(f(a) > 0 && f(b) < 0)) continue;
+      const auto hit = intersect(Kernel::Segment_3(a, b));
+      if (std::get<2>(hit) == 0) continue;
+      const Point3 p = std::get<0>(hit);
+      bool near = false;
+      for (int dx = -1; dx <= 1 && !near; ++dx)
+        for (int dy = -1; dy <= 1 && !near; ++dy)
+          for (int dz = -1; dz <= 1 && !near; ++dz) {
+            auto it = grid.find(cell_of(p, dx, dy, dz));
+            if (it == grid.end()) continue;
+            for (const Point3& q : it->second)
+              if (CGAL::squared_distance(p, q) < spacing * spacing) near = true;
+          }
+      if (near) continue;
+      grid[cell_of(p, 0, 0, 0)].push_back(p);
+      auto vh = c3t3.triangulation().insert(cwp(p));
+      if (vh != Tr::Vertex_handle()) {
+        c3t3.set_dimension(vh, 2);
+        c3t3.set_index(vh, std::get<1>(hit));
+      }
+    }
+  }
+
+  auto refuse = [&](const std::string& what) {
+    const double t5 = thickness_percentile(sm, tree, 1e-9 * diag, 0.05);
+    double suggest = 0.5 * t5;
+    if (!(suggest > 0) || suggest >= D) suggest = 0.5 * D;
+    return bad_input("offset_inward: offsetting by D = " + fmt(D) + " " + what +
+                     ": the solid is thinner than 2 D = " + fmt(2 * D) + " somewhere; try D < " + fmt(suggest) +
+                     " (half the 5th percentile of the local thickness)");
+  };
+
+  if (c3t3.triangulation().number_of_vertices() < 4) {
+    throw refuse("leaves no surface (the offset vanishes)");
+  }
+
+  Criteria criteria(CGAL::parameters::facet_angle = 25.0, CGAL::parameters::facet_size = h,
+                    CGAL::parameters::facet_distance = std::min(0.1 * h, 0.25 * D));
+  CGAL::refine_mesh_3(c3t3, domain, criteria, CGAL::parameters::no_perturb(), CGAL::parameters::no_exude(),
+                     CGAL::parameters::manifold());
+
+  SurfaceMesh out_sm;
+  CGAL::facets_in_complex_3_to_triangle_mesh(c3t3, out_sm);
+  if (out_sm.number_of_faces() == 0) throw refuse("leaves no surface (the offset vanishes)");
+  if (!CGAL::is_closed(out_sm)) {
+    throw internal_error("offset_inward: the meshed offset surface (D = " + fmt(D) + ") is not closed");
+  }
+  TriMesh out = detail::from_surface_mesh(out_sm);
+  const detail::SurfaceTopology topo_out = detail::surface_topology(out);
+  if (topo_out.genus != topo_in.genus || topo_out.components != topo_in.components) {
+    throw refuse("changes the topology (genus " + std::to_string(topo_in.genus) + " -> " +
+                 std::to_string(topo_out.genus) + ", " + std::to_string(topo_in.components) + " -> " +
+                 std::to_string(topo_out.components) + " components)");
+  }
+  if (!PMP::is_outward_oriented(out_sm)) {
+    PMP::reverse_face_orientations(out_sm);
+    out = detail::from_surface_mesh(out_sm);
+  }
+  if (PMP::does_self_intersect(out_sm)) {
+    throw internal_error("offset_inward: the meshed offset surface (D = " + fmt(D) + ") self-intersects");
+  }
+  return out;
+}
+
+}  // namespace igaprep::mesh

@@ -1,0 +1,258 @@
+// TetGen on the nested shells as one PLC. Materials are found by a flood fill
+// over tet faces that do not lie on a shell, then one exact inside test per
+// region (CGAL), rather than by TetGen's -A region seeds: seeds strictly
+// between two shells are hard to place robustly, and an embedded closed
+// surface would split a region so that one seed no longer reaches all of it.
+#include "igaprep/mesh/tetrahedralize.h"
+
+#include <tetgen.h>
+
+#include <CGAL/Polygon_mesh_processing/intersection.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+
+#include <algorithm>
+#include <Eigen/Geometry>
+#include <array>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "cgal_surface.h"
+#include "tetgen_run.h"
+#include "igaprep/core/error.h"
+
+namespace igaprep::mesh {
+namespace {
+
+using detail::Kernel;
+using detail::Point3;
+using detail::SurfaceMesh;
+
+struct FaceKey {
+  std::array<int, 3> v;
+  bool operator==(const FaceKey& o) const { return v == o.v; }
+};
+struct FaceKeyHash {
+  std::size_t operator()(const FaceKey& k) const {
+    std::uint64_t h = 1469598103934665603ULL;
+    for (int x : k.v) h = (h ^ static_cast<std::uint64_t>(x)) * 1099511628211ULL;
+    return static_cast<std::size_t>(h);
+  }
+};
+FaceKey sorted_key(int a, int b, int c) {
+  FaceKey k{{a, b, c}};
+  std::sort(k.v.begin(), k.v.end());
+  return k;
+}
+
+}  // namespace
+
+TetMesh tetrahedralize(const std::vector<TriMesh>& surfaces, const std::vector<TriMesh>& embedded,
+                       const TetgenOptions& options) {
+  if (surfaces.empty()) throw bad_input("tetrahedralize: no surfaces given");
+  const int n = static_cast<int>(surfaces.size());
+  std::vector<const TriMesh*> all;
+  for (const auto& s : surfaces) all.push_back(&s);
+  for (const auto& s : embedded) all.push_back(&s);
+  auto surface_name = [&](int k) {
+    return k < n ? "surface T" + std::to_string(k + 1) : "embedded surface " + std::to_string(k - n);
+  };
+
+  // Concatenated points and triangles; triangle markers are surface index + 1
+  // inside TetGen (it reserves 0 for "no facet").
+  int num_points = 0, num_faces = 0;
+  std::vector<int> vertex_offset;
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    const TriMesh& m = *all[k];
+    if (m.F.rows() == 0) throw bad_input("tetrahedralize: " + surface_name(k) + " has no triangles");
+    if (m.F.minCoeff() < 0 || m.F.maxCoeff() >= m.V.rows()) {
+      throw bad_input("tetrahedralize: " + surface_name(k) + " has an out-of-range vertex index");
+    }
+    if (!m.V.allFinite()) throw bad_input("tetrahedralize: " + surface_name(k) + " has a non-finite vertex");
+    vertex_offset.push_back(num_points);
+    num_points += static_cast<int>(m.V.rows());
+    num_faces += static_cast<int>(m.F.rows());
+  }
+
+  TetMesh out;
+  out.F.resize(num_faces, 3);
+  out.F_marker.resize(num_faces);
+  {
+    int f = 0;
+    for (std::size_t k = 0; k < all.size(); ++k) {
+      for (Eigen::Index t = 0; t < all[k]->F.rows(); ++t, ++f) {
+        out.F.row(f) = all[k]->F.row(t).array() + vertex_offset[k];
+        out.F_marker(f) = static_cast<int>(k);
+      }
+    }
+  }
+
+  // Surfaces that cross each other make no valid PLC: say which ones, decided
+  // exactly (CGAL), before TetGen gives its terser verdict.
+  std::vector<SurfaceMesh> meshes;
+  meshes.reserve(all.size());
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    meshes.push_back(detail::to_surface_mesh(*all[k], "tetrahedralize: " + surface_name(static_cast<int>(k))));
+  }
+  for (std::size_t i = 0; i < all.size(); ++i)
+    for (std::size_t j = i + 1; j < all.size(); ++j)
+      if (CGAL::Polygon_mesh_processing::do_intersect(meshes[i], meshes[j],
+                                                      CGAL::parameters::do_overlap_test_of_bounded_sides(false),
+                                                      CGAL::parameters::do_overlap_test_of_bounded_sides(false))) {
+        throw bad_input("tetrahedralize: " + surface_name(static_cast<int>(i)) + " and " +
+                        surface_name(static_cast<int>(j)) + " intersect or touch; surfaces must be strictly nested");
+      }
+
+  tetgenio in;
+  in.firstnumber = 0;
+  in.numberofpoints = num_points;
+  in.pointlist = new REAL[3 * num_points];
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    const TriMesh& m = *all[k];
+    for (Eigen::Index i = 0; i < m.V.rows(); ++i) {
+      for (int c = 0; c < 3; ++c) in.pointlist[3 * (vertex_offset[k] + i) + c] = m.V(i, c);
+    }
+  }
+  in.numberoffacets = num_faces;
+  in.facetlist = new tetgenio::facet[num_faces];
+  in.facetmarkerlist = new int[num_faces];
+  for (int f = 0; f < num_faces; ++f) {
+    tetgenio::facet& facet = in.facetlist[f];
+    tetgenio::init(&facet);
+    facet.numberofpolygons = 1;
+    facet.polygonlist = new tetgenio::polygon[1];
+    tetgenio::init(&facet.polygonlist[0]);
+    facet.polygonlist[0].numberofvertices = 3;
+    facet.polygonlist[0].vertexlist = new int[3];
+    for (int c = 0; c < 3; ++c) facet.polygonlist[0].vertexlist[c] = out.F(f, c);
+    in.facetmarkerlist[f] = out.F_marker(f) + 1;
+  }
+
+  // p: PLC; Y: no Steiner points on the input facets; z: 0-based; n: neighbours.
+  std::string switches = "pYzn";
+  if (options.radius_edge_ratio > 0) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "q%.17g", options.radius_edge_ratio);
+    switches += buf;
+  }
+  if (options.max_volume > 0) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "a%.17g", options.max_volume);
+    switches += buf;
+  }
+  if (options.quiet) switches += "Q";
+
+  const detail::TetgenOutput result =
+      detail::run_tetgen(in, switches, !options.quiet, "tetrahedralize (" + std::to_string(all.size()) + " surfaces)");
+  const int result_points = static_cast<int>(result.points.size() / 3);
+
+  // -Y keeps every input point at its index; check that TetGen did not merge
+  // or drop any (it does for duplicated points).
+  if (result_points < num_points) {
+    throw bad_input("tetrahedralize: TetGen dropped " + std::to_string(num_points - result_points) +
+                    " input points (duplicated vertices within or between surfaces?)");
+  }
+  out.V.resize(result_points, 3);
+  for (int i = 0; i < result_points; ++i) {
+    for (int c = 0; c < 3; ++c) out.V(i, c) = result.points[3 * i + c];
+  }
+  for (int i = 0; i < num_points; ++i) {
+    if (out.V(i, 0) != in.pointlist[3 * i] || out.V(i, 1) != in.pointlist[3 * i + 1] ||
+        out.V(i, 2) != in.pointlist[3 * i + 2]) {
+      throw bad_input("tetrahedralize: TetGen moved or merged input point " + std::to_string(i) +
+                      " (duplicated vertices within or between surfaces?)");
+    }
+  }
+
+  const int nt = static_cast<int>(result.tets.size() / 4);
+  if (nt == 0) {
+    throw bad_input("tetrahedralize: TetGen produced no tetrahedra for the " + std::to_string(all.size()) +
+                    " input surfaces");
+  }
+  out.T.resize(nt, 4);
+  for (int t = 0; t < nt; ++t) {
+    for (int c = 0; c < 4; ++c) out.T(t, c) = result.tets[4 * t + c];
+    const Eigen::Vector3d a = out.V.row(out.T(t, 0)), b = out.V.row(out.T(t, 1)), c = out.V.row(out.T(t, 2)),
+                          d = out.V.row(out.T(t, 3));
+    if ((b - a).dot((c - a).cross(d - a)) < 0) std::swap(out.T(t, 2), out.T(t, 3));
+  }
+
+  // Every input triangle must be a tet face (that is what -Y promises).
+  std::unordered_map<FaceKey, int, FaceKeyHash> shell_face;  // face -> marker (shells only block the fill)
+  shell_face.reserve(num_faces * 2);
+  for (int f = 0; f < num_faces; ++f) shell_face.emplace(sorted_key(out.F(f, 0), out.F(f, 1), out.F(f, 2)), out.F_marker(f));
+  {
+    std::unordered_map<FaceKey, int, FaceKeyHash> seen;
+    seen.reserve(shell_face.size() * 2);
+    static const int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+    for (int t = 0; t < nt; ++t) {
+      for (const auto& fc : kFace) {
+        FaceKey key = sorted_key(out.T(t, fc[0]), out.T(t, fc[1]), out.T(t, fc[2]));
+        if (shell_face.count(key)) seen.emplace(key, 1);
+      }
+    }
+    if (seen.size() != shell_face.size()) {
+      throw bad_input("tetrahedralize: " + std::to_string(shell_face.size() - seen.size()) +
+                      " input triangles are not tet faces (are two surfaces overlapping or touching?)");
+    }
+  }
+
+  // Flood fill across faces that do not lie on a shell T1..Tn.
+  std::vector<int> region(nt, -1);
+  std::vector<int> representative;
+  static const int kOpposite[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+  std::vector<int> stack;
+  for (int seed = 0; seed < nt; ++seed) {
+    if (region[seed] >= 0) continue;
+    const int r = static_cast<int>(representative.size());
+    representative.push_back(seed);
+    region[seed] = r;
+    stack.assign(1, seed);
+    while (!stack.empty()) {
+      const int t = stack.back();
+      stack.pop_back();
+      for (int j = 0; j < 4; ++j) {
+        // TetGen's neighbour j is opposite corner j of its own (unswapped) tet;
+        // the face is the same set of vertices either way.
+        const int nb = result.neighbors[4 * t + j];
+        if (nb < 0 || region[nb] >= 0) continue;
+        const int* tv = &result.tets[4 * t];
+        auto it = shell_face.find(sorted_key(tv[kOpposite[j][0]], tv[kOpposite[j][1]], tv[kOpposite[j][2]]));
+        if (it != shell_face.end() && it->second < n) continue;
+        region[nb] = r;
+        stack.push_back(nb);
+      }
+    }
+  }
+
+  // Material of a region = (number of shells containing an interior point) - 1,
+  // decided with CGAL's exact predicates at a tet centroid.
+  using Side = CGAL::Side_of_triangle_mesh<SurfaceMesh, Kernel>;
+  std::vector<std::unique_ptr<Side>> sides;
+  for (int k = 0; k < n; ++k) sides.push_back(std::make_unique<Side>(meshes[k]));
+  std::vector<int> region_material(representative.size());
+  for (std::size_t r = 0; r < representative.size(); ++r) {
+    const int t = representative[r];
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (int j = 0; j < 4; ++j) c += out.V.row(out.T(t, j)).transpose();
+    c /= 4.0;
+    int inside = 0;
+    for (int k = 0; k < n; ++k) {
+      const auto s = (*sides[k])(Point3(c(0), c(1), c(2)));
+      if (s == CGAL::ON_BOUNDED_SIDE) ++inside;
+      if (s == CGAL::ON_BOUNDARY) throw internal_error("tetrahedralize: a tet centroid lies on an input surface");
+    }
+    if (inside == 0) {
+      throw bad_input("tetrahedralize: TetGen kept tetrahedra outside T1; is T1 closed?");
+    }
+    region_material[r] = inside - 1;
+  }
+  out.material.resize(nt);
+  for (int t = 0; t < nt; ++t) out.material(t) = region_material[region[t]];
+  return out;
+}
+
+}  // namespace igaprep::mesh

@@ -1,0 +1,194 @@
+// TetGen on nested shells (tetrahedralize.h).
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cstdio>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "igaprep/core/error.h"
+#include "igaprep/mesh/offset_surface.h"
+#include "igaprep/mesh/read_surface.h"
+#include "igaprep/mesh/tetrahedralize.h"
+#include "igaprep/models/shapes.h"
+
+namespace {
+
+using igaprep::mesh::TetMesh;
+using igaprep::mesh::TriMesh;
+
+double surface_volume(const TriMesh& m) {
+  double vol = 0;
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f) {
+    const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
+    vol += a.dot(b.cross(c)) / 6.0;
+  }
+  return vol;
+}
+
+double tet_volume(const TetMesh& m, Eigen::Index t) {
+  const Eigen::Vector3d a = m.V.row(m.T(t, 0)), b = m.V.row(m.T(t, 1)), c = m.V.row(m.T(t, 2)), d = m.V.row(m.T(t, 3));
+  return (b - a).dot((c - a).cross(d - a)) / 6.0;
+}
+
+TriMesh translated(TriMesh m, const Eigen::RowVector3d& shift) {
+  m.V.rowwise() += shift;
+  return m;
+}
+
+// A flat triangulated disc of radius r at height z (an open surface): a
+// centre, then `rings` rings of `sectors` points.
+TriMesh disc(double r, double z, int rings, int sectors) {
+  TriMesh m;
+  m.V.resize(1 + rings * sectors, 3);
+  m.V.row(0) << 0, 0, z;
+  for (int i = 1; i <= rings; ++i)
+    for (int j = 0; j < sectors; ++j) {
+      const double a = 2 * M_PI * (j + 0.5 * i) / sectors;
+      m.V.row(1 + (i - 1) * sectors + j) << r * i / rings * std::cos(a), r * i / rings * std::sin(a), z;
+    }
+  std::vector<Eigen::RowVector3i> f;
+  for (int j = 0; j < sectors; ++j) f.push_back({0, 1 + j, 1 + (j + 1) % sectors});
+  for (int i = 1; i < rings; ++i)
+    for (int j = 0; j < sectors; ++j) {
+      const int a0 = 1 + (i - 1) * sectors, b0 = 1 + i * sectors, j1 = (j + 1) % sectors;
+      f.push_back({a0 + j, b0 + j, b0 + j1});
+      f.push_back({a0 + j, b0 + j1, a0 + j1});
+    }
+  m.F.resize(f.size(), 3);
+  for (std::size_t i = 0; i < f.size(); ++i) m.F.row(i) = f[i];
+  return m;
+}
+
+// Checks shared by every case: positive tets, input triangles as marked tet
+// faces whose neighbouring tets have the right materials, material volumes.
+void check_tet_mesh(const TetMesh& tm, const std::vector<TriMesh>& surfaces, const std::vector<TriMesh>& embedded) {
+  const int n = static_cast<int>(surfaces.size());
+  ASSERT_GT(tm.T.rows(), 0);
+  ASSERT_EQ(tm.material.size(), tm.T.rows());
+  for (Eigen::Index t = 0; t < tm.T.rows(); ++t) ASSERT_GT(tet_volume(tm, t), 0.0) << "tet " << t;
+  EXPECT_GE(tm.material.minCoeff(), 0);
+  EXPECT_LE(tm.material.maxCoeff(), n - 1);
+
+  // Face -> materials of the tets on either side.
+  std::map<std::array<int, 3>, std::vector<int>> face_tets;
+  static const int kFace[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  for (Eigen::Index t = 0; t < tm.T.rows(); ++t)
+    for (const auto& fc : kFace) {
+      std::array<int, 3> k{tm.T(t, fc[0]), tm.T(t, fc[1]), tm.T(t, fc[2])};
+      std::sort(k.begin(), k.end());
+      face_tets[k].push_back(tm.material(t));
+    }
+
+  // Input triangles in order, with their markers, at their original positions.
+  std::vector<const TriMesh*> all;
+  for (const auto& s : surfaces) all.push_back(&s);
+  for (const auto& s : embedded) all.push_back(&s);
+  Eigen::Index row = 0;
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    for (Eigen::Index f = 0; f < all[k]->F.rows(); ++f, ++row) {
+      ASSERT_LT(row, tm.F.rows());
+      ASSERT_EQ(tm.F_marker(row), static_cast<int>(k));
+      for (int c = 0; c < 3; ++c)
+        ASSERT_EQ(tm.V.row(tm.F(row, c)), all[k]->V.row(all[k]->F(f, c))) << "surface " << k << " face " << f;
+      std::array<int, 3> key{tm.F(row, 0), tm.F(row, 1), tm.F(row, 2)};
+      std::sort(key.begin(), key.end());
+      auto it = face_tets.find(key);
+      ASSERT_NE(it, face_tets.end()) << "surface " << k << " triangle " << f << " is not a tet face";
+      std::vector<int> mats = it->second;
+      std::sort(mats.begin(), mats.end());
+      if (static_cast<int>(k) == 0) {
+        EXPECT_EQ(mats, std::vector<int>({0})) << "outer face " << f;
+      } else if (static_cast<int>(k) < n) {
+        EXPECT_EQ(mats, std::vector<int>({static_cast<int>(k) - 1, static_cast<int>(k)})) << "surface " << k << " face " << f;
+      } else {
+        ASSERT_EQ(mats.size(), 2u);
+        EXPECT_EQ(mats[0], mats[1]) << "embedded surface face " << f << " separates two materials";
+      }
+    }
+  }
+  EXPECT_EQ(row, tm.F.rows());
+
+  // Material volumes equal the volumes between the surfaces.
+  std::vector<double> mat_vol(n, 0.0);
+  for (Eigen::Index t = 0; t < tm.T.rows(); ++t) mat_vol[tm.material(t)] += tet_volume(tm, t);
+  for (int i = 0; i < n; ++i) {
+    const double expected = surface_volume(surfaces[i]) - (i + 1 < n ? surface_volume(surfaces[i + 1]) : 0.0);
+    EXPECT_NEAR(mat_vol[i], expected, 1e-9 * std::abs(expected)) << "material " << i;
+  }
+}
+
+}  // namespace
+
+TEST(Tetrahedralize, NestedSpheres) {
+  const std::vector<TriMesh> shells{igaprep::models::make_ellipsoid(1, 1, 1, 3),
+                                    igaprep::models::make_ellipsoid(0.6, 0.55, 0.5, 2)};
+  const TetMesh tm = igaprep::mesh::tetrahedralize(shells);
+  check_tet_mesh(tm, shells, {});
+  EXPECT_EQ(tm.material.maxCoeff(), 1);
+}
+
+TEST(Tetrahedralize, ThreeShellsWithMaxVolume) {
+  const std::vector<TriMesh> shells{igaprep::models::make_ellipsoid(1, 1, 1, 2),
+                                    igaprep::models::make_ellipsoid(0.7, 0.7, 0.7, 2),
+                                    igaprep::models::make_ellipsoid(0.3, 0.3, 0.3, 1)};
+  igaprep::mesh::TetgenOptions opt;
+  opt.max_volume = 0.002;
+  const TetMesh tm = igaprep::mesh::tetrahedralize(shells, {}, opt);
+  check_tet_mesh(tm, shells, {});
+  // -Y forbids splitting boundary faces, so TetGen may leave a few tets at the
+  // surfaces above the bound; the interior must respect it.
+  int above = 0;
+  double largest = 0;
+  for (Eigen::Index t = 0; t < tm.T.rows(); ++t) {
+    above += tet_volume(tm, t) > 0.002 * (1 + 1e-9);
+    largest = std::max(largest, tet_volume(tm, t));
+  }
+  std::printf("max-volume bound 0.002: %d of %d tets above, largest %g\n", above, int(tm.T.rows()), largest);
+  EXPECT_LE(above, 0.01 * tm.T.rows());
+  EXPECT_GT(tm.T.rows(), 0.5 * (4.0 / 3.0 * M_PI) / 0.002);
+}
+
+TEST(Tetrahedralize, EmbeddedDiscAndClosedSurface) {
+  const std::vector<TriMesh> shells{igaprep::models::make_ellipsoid(1, 1, 1, 3),
+                                    igaprep::models::make_ellipsoid(0.45, 0.45, 0.45, 2)};
+  // An open disc inside T2 and a small closed sphere between T1 and T2: both
+  // become tet faces, and neither changes any material.
+  const std::vector<TriMesh> embedded{disc(0.3, 0.02, 4, 16),
+                                      translated(igaprep::models::make_ellipsoid(0.15, 0.15, 0.15, 1), {0, 0, 0.7})};
+  const TetMesh tm = igaprep::mesh::tetrahedralize(shells, embedded);
+  check_tet_mesh(tm, shells, embedded);
+  int disc_faces = 0, ball_faces = 0;
+  for (Eigen::Index f = 0; f < tm.F.rows(); ++f) {
+    disc_faces += tm.F_marker(f) == 2;
+    ball_faces += tm.F_marker(f) == 3;
+  }
+  EXPECT_EQ(disc_faces, embedded[0].F.rows());
+  EXPECT_EQ(ball_faces, embedded[1].F.rows());
+}
+
+TEST(Tetrahedralize, IntersectingSurfacesAreRefused) {
+  const std::vector<TriMesh> shells{igaprep::models::make_ellipsoid(1, 1, 1, 2),
+                                    translated(igaprep::models::make_ellipsoid(0.5, 0.5, 0.5, 2), {0.8, 0.0, 0.0})};
+  try {
+    igaprep::mesh::tetrahedralize(shells);
+    FAIL() << "intersecting surfaces were accepted";
+  } catch (const igaprep::Error& e) {
+    EXPECT_EQ(e.kind(), igaprep::ErrorKind::BadInput) << e.what();
+    EXPECT_NE(std::string(e.what()).find("intersect"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Tetrahedralize, PelvisWithCorticalShell) {
+  const std::string path = std::string(IGAPREP_SHARED_MODELS_DIR) + "/pelvis_hip.stl";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared model " << path << " is absent";
+  const TriMesh outer = igaprep::mesh::read_surface(path);
+  const std::vector<TriMesh> shells{outer, igaprep::mesh::offset_inward(outer, {0.8})};
+  const TetMesh tm = igaprep::mesh::tetrahedralize(shells);
+  check_tet_mesh(tm, shells, {});
+}

@@ -63,3 +63,19 @@ TEST(ExportCommand, WritesFilesAndRejectsUnknownFormat) {
 }
 
 }  // namespace
+
+#include "igaprep/spline/multipatch_topology.h"
+
+namespace {
+TEST(ExportTestModel, IsAConformingMultipatch) {
+  // The writers of shared-node formats (MFEM, BEXT) rely on conforming
+  // interfaces; the test model must be one, in all its orientations.
+  const igaprep::spline::MultiPatch mp = igaprep::test::make_test_model();
+  EXPECT_NO_THROW(igaprep::spline::validate_multipatch(mp));
+  const auto report = igaprep::spline::check_conformity(mp, 1e-12);
+  EXPECT_TRUE(report.conforming) << (report.problems.empty() ? "" : report.problems.front());
+  EXPECT_LT(report.max_deviation, 1e-12);
+  EXPECT_EQ(mp.patches.size(), 4u);
+  EXPECT_EQ(mp.materials.size(), 2u);
+}
+}  // namespace

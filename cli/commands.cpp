@@ -9,6 +9,7 @@ void add_tetmesh_command(CLI::App& app);
 void add_offset_command(CLI::App& app);
 void add_model_command(CLI::App& app);
 void add_run_command(CLI::App& app);
+void add_export_command(CLI::App& app);
 
 namespace {
 std::map<CLI::App*, CommandBody>& bodies() {
@@ -25,6 +26,7 @@ void register_commands(CLI::App& app) {
   add_offset_command(app);
   add_tetmesh_command(app);
   add_model_command(app);
+  add_export_command(app);
 }
 
 int run_selected(CLI::App& app) {

@@ -57,7 +57,12 @@ double winding_number(const mesh::TriMesh& m, const Eigen::Vector3d& x) {
 
 double patch_volume(const spline::Patch& p) {
   std::array<std::vector<double>, 3> pts, wts;
-  for (int d = 0; d < 3; ++d) gauss_grid(p.knots[d], 2 * p.degrees[d] + 1, &pts[d], &wts[d]);
+  // det J of a polynomial patch has degree 3p-1: (3p+1)/2 Gauss points are
+  // exact. Rational integrands are not polynomial: use more points.
+  for (int d = 0; d < 3; ++d) {
+    const int n = p.rational() ? 3 * p.degrees[d] + 3 : (3 * p.degrees[d] + 1) / 2 + 1;
+    gauss_grid(p.knots[d], n, &pts[d], &wts[d]);
+  }
   const spline::GridEvaluation ev = spline::evaluate_grid(p, pts, 1);
   double vol = 0.0;
   long at = 0;

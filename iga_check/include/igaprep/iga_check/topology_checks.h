@@ -21,7 +21,8 @@ double enclosed_volume(const mesh::TriMesh& m);
 // Generalized winding number of a closed mesh at x (1 inside, 0 outside).
 double winding_number(const mesh::TriMesh& m, const Eigen::Vector3d& x);
 
-// Integral of det J over the patch (Gauss quadrature, 2p+1 points per direction per element).
+// Integral of det J over the patch (Gauss quadrature per element: exact for
+// B-spline patches, 3p+3 points per direction for rational ones).
 double patch_volume(const spline::Patch& p);
 
 // Area of a patch side (Gauss quadrature of |x_s x x_t|).

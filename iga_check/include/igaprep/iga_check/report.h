@@ -1,0 +1,69 @@
+#pragma once
+// The analysis-suitability report of a model: the Jacobian certificate of
+// every element, quality metrics, fidelity to the input surfaces, topology and
+// volumes, and a verdict; as data (CheckReport), as report.json (keys
+// documented in docs/check-report.md, stable) and as report.html (one
+// self-contained file: inline CSS and SVG, no scripts, fonts or links).
+#include <string>
+#include <vector>
+
+#include "igaprep/iga_check/fidelity.h"
+#include "igaprep/iga_check/jacobian_certificate.h"
+#include "igaprep/iga_check/quality_metrics.h"
+#include "igaprep/iga_check/topology_checks.h"
+#include "igaprep/mesh/tri_mesh.h"
+#include "igaprep/spline/multipatch.h"
+
+namespace igaprep::iga_check {
+
+struct CheckOptions {
+  CertifyOptions certify;
+  QualityOptions quality;
+  FidelityOptions fidelity;
+  double conformity_tolerance = 1e-9;  // relative to the bounding-box diagonal
+  bool allow_degenerate = false;       // degenerate elements pass
+  int worst_elements = 10;             // elements listed by smallest certified lower bound
+};
+
+struct PatchSummary {
+  int patch = -1, material = 0;
+  int elements = 0, positive = 0, negative = 0, degenerate = 0, undecided = 0;
+  double det_j_lower_bound = 0.0;  // smallest certified lower bound of its elements
+  bool passed = true;
+};
+
+struct CheckReport {
+  std::string model;                        // name shown in the report (e.g. the file)
+  double diagonal = 0.0;                    // bounding-box diagonal of the model
+  std::vector<std::string> surface_labels;  // input surfaces, outermost first (may be empty)
+  std::vector<std::string> material_names;
+  std::vector<ElementCertificate> certificates;  // every element of every patch
+  std::vector<PatchSummary> patches;
+  std::vector<ElementCertificate> worst_elements;
+  QualityReport quality;
+  std::vector<SurfaceFidelity> fidelity;
+  TopologyReport topology;
+  bool allow_degenerate = false;
+  bool passed = false;            // every element positive (or degenerate when allowed)
+  std::vector<int> failed_patches;
+  std::vector<std::string> warnings;  // topology and volume findings (do not change `passed`)
+  std::string verdict;            // one line, names the failed patches
+};
+
+// Inputs: model, input surfaces outermost first (label i = surface i; may be
+// empty: no fidelity, no region volumes), their labels (may be empty),
+// options, the name shown in the report.
+// Output: the report. Throws bad_input for a model that cannot be checked
+// (degree 0, non-positive weight, inconsistent sides).
+CheckReport build_check_report(const spline::MultiPatch& mp, const std::vector<mesh::TriMesh>& surfaces,
+                               const std::vector<std::string>& surface_labels = {},
+                               const CheckOptions& options = {}, const std::string& model = "");
+
+std::string report_json(const CheckReport& r);  // pretty-printed, deterministic
+std::string report_html(const CheckReport& r);
+
+// Creates `dir` if needed and writes dir/report.json and dir/report.html,
+// each atomically. Throws bad_input when the folder cannot be written.
+void write_report(const CheckReport& r, const std::string& dir);
+
+}  // namespace igaprep::iga_check

@@ -1,0 +1,374 @@
+#include "igaprep/iga_check/report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "igaprep/core/atomic_file.h"
+#include "igaprep/core/error.h"
+
+namespace igaprep::iga_check {
+
+using nlohmann::ordered_json;
+
+namespace {
+
+bool element_passes(const ElementCertificate& c, bool allow_degenerate) {
+  return c.status == ElementStatus::Positive || (allow_degenerate && c.status == ElementStatus::Degenerate);
+}
+
+// JSON numbers must be finite: non-finite values (never expected) become null.
+ordered_json num(double x) { return std::isfinite(x) ? ordered_json(x) : ordered_json(nullptr); }
+
+ordered_json vec3(const Eigen::Vector3d& v) { return ordered_json::array({num(v[0]), num(v[1]), num(v[2])}); }
+
+ordered_json stats_json(const MetricStats& s) {
+  ordered_json h = {{"lo", num(s.histogram.lo)}, {"hi", num(s.histogram.hi)}, {"counts", s.histogram.counts}};
+  return {{"min", num(s.min)}, {"max", num(s.max)}, {"mean", num(s.mean)}, {"count", s.count}, {"histogram", h}};
+}
+
+ordered_json distance_json(const DistanceStats& d) {
+  return {{"samples", d.samples},           {"max", num(d.max)},
+          {"mean", num(d.mean)},            {"p95", num(d.p95)},
+          {"max_relative", num(d.max_relative)}, {"mean_relative", num(d.mean_relative)},
+          {"p95_relative", num(d.p95_relative)}, {"max_location", vec3(d.max_location)}};
+}
+
+ordered_json element_json(const ElementCertificate& c) {
+  return {{"patch", c.patch},
+          {"element", {c.element[0], c.element[1], c.element[2]}},
+          {"status", to_string(c.status)},
+          {"lower_bound", num(c.lower_bound)},
+          {"upper_bound", num(c.upper_bound)},
+          {"location", vec3(c.location)},
+          {"boxes", c.boxes}};
+}
+
+std::string fmt(double x) {
+  if (!std::isfinite(x)) return std::isnan(x) ? "n/a" : (x > 0 ? "inf" : "-inf");
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+
+std::string esc(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    switch (c) {
+      case '&': o += "&amp;"; break;
+      case '<': o += "&lt;"; break;
+      case '>': o += "&gt;"; break;
+      case '"': o += "&quot;"; break;
+      default: o += c;
+    }
+  }
+  return o;
+}
+
+// A histogram as an inline SVG bar chart.
+std::string svg_histogram(const Histogram& h, const std::string& title) {
+  const int W = 520, H = 220, left = 50, right = 10, top = 28, bottom = 36;
+  const int n = static_cast<int>(h.counts.size());
+  long peak = 1;
+  for (long c : h.counts) peak = std::max(peak, c);
+  std::ostringstream s;
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H << "\" viewBox=\"0 0 " << W
+    << ' ' << H << "\" role=\"img\">\n";
+  s << "<text x=\"" << W / 2 << "\" y=\"18\" text-anchor=\"middle\" class=\"t\">" << esc(title) << "</text>\n";
+  const double pw = W - left - right, ph = H - top - bottom;
+  s << "<line x1=\"" << left << "\" y1=\"" << top + ph << "\" x2=\"" << left + pw << "\" y2=\"" << top + ph
+    << "\" stroke=\"#444\"/>\n";
+  for (int b = 0; b < n; ++b) {
+    const double bh = ph * h.counts[b] / peak;
+    const double x = left + pw * b / n;
+    s << "<rect x=\"" << fmt(x + 1) << "\" y=\"" << fmt(top + ph - bh) << "\" width=\"" << fmt(pw / n - 2)
+      << "\" height=\"" << fmt(bh) << "\" fill=\"#3b7dd8\"><title>[" << fmt(h.lo + (h.hi - h.lo) * b / n) << ", "
+      << fmt(h.lo + (h.hi - h.lo) * (b + 1) / n) << "): " << h.counts[b] << "</title></rect>\n";
+  }
+  s << "<text x=\"" << left << "\" y=\"" << H - 12 << "\" class=\"a\">" << fmt(h.lo) << "</text>\n";
+  s << "<text x=\"" << left + pw << "\" y=\"" << H - 12 << "\" text-anchor=\"end\" class=\"a\">" << fmt(h.hi)
+    << "</text>\n";
+  s << "<text x=\"" << left - 4 << "\" y=\"" << top + 10 << "\" text-anchor=\"end\" class=\"a\">" << peak
+    << "</text>\n";
+  s << "<text x=\"" << left - 4 << "\" y=\"" << top + ph << "\" text-anchor=\"end\" class=\"a\">0</text>\n";
+  s << "</svg>\n";
+  return s.str();
+}
+
+}  // namespace
+
+CheckReport build_check_report(const spline::MultiPatch& mp, const std::vector<mesh::TriMesh>& surfaces,
+                               const std::vector<std::string>& surface_labels, const CheckOptions& options,
+                               const std::string& model) {
+  CheckReport r;
+  r.model = model;
+  r.allow_degenerate = options.allow_degenerate;
+  r.surface_labels = surface_labels;
+  for (size_t i = r.surface_labels.size(); i < surfaces.size(); ++i)
+    r.surface_labels.push_back(i < mp.labels.size() ? mp.labels[i] : "surface " + std::to_string(i));
+  for (const auto& m : mp.materials) r.material_names.push_back(m.name);
+  if (mp.patches.empty()) throw bad_input("check: the model has no patches");
+  r.diagonal = model_diagonal(mp);
+  r.certificates = certify_model(mp, options.certify);
+  r.quality = quality_metrics(mp, options.quality);
+  r.fidelity = fidelity(mp, surfaces, r.diagonal, options.fidelity);
+  r.topology = topology_checks(mp, surfaces, r.diagonal, options.conformity_tolerance);
+
+  r.patches.resize(mp.patches.size());
+  for (size_t p = 0; p < mp.patches.size(); ++p) {
+    r.patches[p].patch = static_cast<int>(p);
+    r.patches[p].material = mp.patches[p].material;
+    r.patches[p].det_j_lower_bound = std::numeric_limits<double>::infinity();
+  }
+  for (const auto& c : r.certificates) {
+    PatchSummary& s = r.patches[c.patch];
+    ++s.elements;
+    switch (c.status) {
+      case ElementStatus::Positive: ++s.positive; break;
+      case ElementStatus::Negative: ++s.negative; break;
+      case ElementStatus::Degenerate: ++s.degenerate; break;
+      case ElementStatus::Undecided: ++s.undecided; break;
+    }
+    s.det_j_lower_bound = std::min(s.det_j_lower_bound, c.lower_bound);
+    if (!element_passes(c, options.allow_degenerate)) s.passed = false;
+  }
+  for (const auto& s : r.patches)
+    if (!s.passed) r.failed_patches.push_back(s.patch);
+  r.passed = r.failed_patches.empty();
+
+  // Worst elements: failing ones first, then by lower bound.
+  std::vector<ElementCertificate> sorted = r.certificates;
+  std::stable_sort(sorted.begin(), sorted.end(), [&](const ElementCertificate& a, const ElementCertificate& b) {
+    const bool pa = element_passes(a, options.allow_degenerate), pb = element_passes(b, options.allow_degenerate);
+    if (pa != pb) return !pa;
+    return a.lower_bound < b.lower_bound;
+  });
+  if (static_cast<int>(sorted.size()) > options.worst_elements) sorted.resize(options.worst_elements);
+  r.worst_elements = sorted;
+
+  // Warnings that do not decide the verdict.
+  if (!r.topology.conforming)
+    r.warnings.push_back("interfaces not conforming: largest control-point gap " + fmt(r.topology.interface_max_gap));
+  if (!r.topology.watertight)
+    for (const auto& w : r.topology.watertight_problems) r.warnings.push_back("not watertight: " + w);
+  for (const auto& rv : r.topology.regions)
+    if (rv.patches > 0 && std::abs(rv.relative_difference) > 0.05)
+      r.warnings.push_back("region " + std::to_string(rv.region) + " volume differs from the input by " +
+                           fmt(100 * rv.relative_difference) + "%");
+
+  long counts[4] = {0, 0, 0, 0};
+  for (const auto& c : r.certificates) ++counts[static_cast<int>(c.status)];
+  std::ostringstream v;
+  if (r.passed) {
+    v << "PASS: all " << r.certificates.size() << " elements of " << mp.patches.size()
+      << " patches have a certified positive Jacobian";
+    if (counts[2] > 0) v << " (" << counts[2] << " degenerate on the boundary, allowed)";
+  } else {
+    v << "FAIL: patches";
+    for (int p : r.failed_patches) v << ' ' << p;
+    v << " not certified positive (" << counts[1] << " negative, " << counts[2] << " degenerate"
+      << (options.allow_degenerate ? " allowed" : "") << ", " << counts[3] << " undecided elements)";
+  }
+  r.verdict = v.str();
+  return r;
+}
+
+std::string report_json(const CheckReport& r) {
+  ordered_json j;
+  j["format"] = "igaprep-check-report";
+  j["format_version"] = 1;
+  j["model"] = r.model;
+  long counts[4] = {0, 0, 0, 0};
+  for (const auto& c : r.certificates) ++counts[static_cast<int>(c.status)];
+  double min_lower = std::numeric_limits<double>::infinity();
+  for (const auto& c : r.certificates) min_lower = std::min(min_lower, c.lower_bound);
+  j["summary"] = {{"passed", r.passed},
+                  {"verdict", r.verdict},
+                  {"allow_degenerate", r.allow_degenerate},
+                  {"patches", r.patches.size()},
+                  {"elements", r.certificates.size()},
+                  {"positive", counts[0]},
+                  {"negative", counts[1]},
+                  {"degenerate", counts[2]},
+                  {"undecided", counts[3]},
+                  {"failed_patches", r.failed_patches},
+                  {"min_det_j_lower_bound", num(min_lower)},
+                  {"min_scaled_jacobian", num(r.quality.overall.scaled_jacobian.min)},
+                  {"warnings", r.warnings}};
+  j["bounding_box_diagonal"] = num(r.diagonal);
+  ordered_json patches = ordered_json::array();
+  for (size_t p = 0; p < r.patches.size(); ++p) {
+    const PatchSummary& s = r.patches[p];
+    const PatchQuality& q = r.quality.patches[p];
+    patches.push_back({{"index", s.patch},
+                       {"material", s.material},
+                       {"passed", s.passed},
+                       {"elements", s.elements},
+                       {"positive", s.positive},
+                       {"negative", s.negative},
+                       {"degenerate", s.degenerate},
+                       {"undecided", s.undecided},
+                       {"det_j_lower_bound", num(s.det_j_lower_bound)},
+                       {"volume", num(r.topology.patch_volumes[p])},
+                       {"region", p < r.topology.patch_region.size() ? r.topology.patch_region[p] : -1},
+                       {"points", q.points},
+                       {"singular_points", q.singular_points},
+                       {"det_j", stats_json(q.det_j)},
+                       {"scaled_jacobian", stats_json(q.scaled_jacobian)},
+                       {"condition", stats_json(q.condition)}});
+  }
+  j["patches"] = patches;
+  j["quality"] = {{"points", r.quality.overall.points},
+                  {"singular_points", r.quality.overall.singular_points},
+                  {"det_j", stats_json(r.quality.overall.det_j)},
+                  {"scaled_jacobian", stats_json(r.quality.overall.scaled_jacobian)},
+                  {"condition", stats_json(r.quality.overall.condition)}};
+  ordered_json failing = ordered_json::array();
+  for (const auto& c : r.certificates)
+    if (c.status != ElementStatus::Positive) failing.push_back(element_json(c));
+  j["non_positive_elements"] = failing;
+  ordered_json worst = ordered_json::array();
+  for (const auto& c : r.worst_elements) worst.push_back(element_json(c));
+  j["worst_elements"] = worst;
+  ordered_json points = ordered_json::array();
+  for (const auto& q : r.quality.worst)
+    points.push_back({{"patch", q.patch},
+                      {"element", {q.element[0], q.element[1], q.element[2]}},
+                      {"uvw", vec3(q.uvw)},
+                      {"x", vec3(q.x)},
+                      {"det_j", num(q.det_j)},
+                      {"scaled_jacobian", num(q.scaled_jacobian)},
+                      {"condition", num(q.condition)}});
+  j["worst_points"] = points;
+  ordered_json fid = ordered_json::array();
+  for (const auto& f : r.fidelity)
+    fid.push_back({{"surface", f.surface},
+                   {"label", f.surface < static_cast<int>(r.surface_labels.size()) ? r.surface_labels[f.surface] : f.label},
+                   {"boundary_faces", f.boundary_faces},
+                   {"interface_faces", f.interface_faces},
+                   {"spline_to_mesh", distance_json(f.spline_to_mesh)},
+                   {"mesh_to_spline", distance_json(f.mesh_to_spline)}});
+  j["fidelity"] = fid;
+  const TopologyReport& t = r.topology;
+  ordered_json collapsed = ordered_json::array();
+  for (const auto& s : t.sides)
+    if (s.kind == "collapsed") collapsed.push_back({s.patch, s.side});
+  ordered_json mats = ordered_json::array();
+  for (size_t m = 0; m < t.material_volumes.size(); ++m)
+    mats.push_back({{"index", m},
+                    {"name", m < r.material_names.size() ? r.material_names[m] : ""},
+                    {"volume", num(t.material_volumes[m])}});
+  ordered_json regions = ordered_json::array();
+  for (const auto& rv : t.regions)
+    regions.push_back({{"region", rv.region},
+                       {"outer_surface", rv.region < static_cast<int>(r.surface_labels.size()) ? r.surface_labels[rv.region] : ""},
+                       {"input_volume", num(rv.input_volume)},
+                       {"spline_volume", num(rv.spline_volume)},
+                       {"patches", rv.patches},
+                       {"relative_difference", num(rv.relative_difference)}});
+  j["topology"] = {{"conforming", t.conforming},
+                   {"interface_max_gap", num(t.interface_max_gap)},
+                   {"interface_max_gap_relative", num(t.interface_max_gap_relative)},
+                   {"conformity_problems", t.conformity_problems},
+                   {"watertight", t.watertight},
+                   {"watertight_problems", t.watertight_problems},
+                   {"collapsed_sides", collapsed},
+                   {"material_volumes", mats},
+                   {"regions", regions}};
+  return j.dump(2) + "\n";
+}
+
+std::string report_html(const CheckReport& r) {
+  std::ostringstream h;
+  h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>igaprep check: "
+    << esc(r.model) << "</title>\n<style>\n"
+    << "body{font-family:sans-serif;margin:2em;max-width:70em;color:#222}\n"
+    << "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;padding:3px 8px;text-align:right}\n"
+    << "th{background:#eee}.pass{color:#1a7f37;font-weight:bold}.fail{color:#c62828;font-weight:bold}\n"
+    << "svg .t{font-size:14px}svg .a{font-size:11px}\n"
+    << "</style>\n</head>\n<body>\n";
+  h << "<h1>Analysis-suitability report</h1>\n<p>Model: <code>" << esc(r.model) << "</code>; bounding-box diagonal "
+    << fmt(r.diagonal) << "</p>\n";
+  h << "<p id=\"verdict\" class=\"" << (r.passed ? "pass" : "fail") << "\">" << esc(r.verdict) << "</p>\n";
+  if (!r.warnings.empty()) {
+    h << "<ul>\n";
+    for (const auto& w : r.warnings) h << "<li>" << esc(w) << "</li>\n";
+    h << "</ul>\n";
+  }
+  h << "<h2>Patches</h2>\n<table>\n<tr><th>patch</th><th>material</th><th>elements</th><th>positive</th>"
+       "<th>negative</th><th>degenerate</th><th>undecided</th><th>certified min det J &ge;</th><th>min det J "
+       "(sampled)</th><th>min scaled J</th><th>mean scaled J</th><th>max condition</th><th>volume</th><th>result</th></tr>\n";
+  for (size_t p = 0; p < r.patches.size(); ++p) {
+    const auto& s = r.patches[p];
+    const auto& q = r.quality.patches[p];
+    h << "<tr><td>" << s.patch << "</td><td>" << s.material << "</td><td>" << s.elements << "</td><td>" << s.positive
+      << "</td><td>" << s.negative << "</td><td>" << s.degenerate << "</td><td>" << s.undecided << "</td><td>"
+      << fmt(s.det_j_lower_bound) << "</td><td>" << fmt(q.det_j.min) << "</td><td>" << fmt(q.scaled_jacobian.min)
+      << "</td><td>" << fmt(q.scaled_jacobian.mean) << "</td><td>" << fmt(q.condition.max) << "</td><td>"
+      << fmt(r.topology.patch_volumes[p]) << "</td><td class=\"" << (s.passed ? "pass\">pass" : "fail\">FAIL")
+      << "</td></tr>\n";
+  }
+  h << "</table>\n<h2>Histograms (all sample points)</h2>\n";
+  h << svg_histogram(r.quality.overall.scaled_jacobian.histogram, "scaled Jacobian");
+  h << svg_histogram(r.quality.overall.det_j.histogram, "det J");
+  h << "<h2>Worst elements (certified lower bound of det J)</h2>\n<table>\n<tr><th>patch</th><th>element</th>"
+       "<th>status</th><th>lower bound</th><th>upper bound</th><th>at (u, v, w)</th></tr>\n";
+  for (const auto& c : r.worst_elements)
+    h << "<tr><td>" << c.patch << "</td><td>" << c.element[0] << ", " << c.element[1] << ", " << c.element[2]
+      << "</td><td>" << to_string(c.status) << "</td><td>" << fmt(c.lower_bound) << "</td><td>" << fmt(c.upper_bound)
+      << "</td><td>" << fmt(c.location[0]) << ", " << fmt(c.location[1]) << ", " << fmt(c.location[2]) << "</td></tr>\n";
+  h << "</table>\n<h2>Worst points (scaled Jacobian)</h2>\n<table>\n<tr><th>patch</th><th>element</th><th>(u, v, "
+       "w)</th><th>scaled J</th><th>det J</th><th>condition</th></tr>\n";
+  for (const auto& q : r.quality.worst)
+    h << "<tr><td>" << q.patch << "</td><td>" << q.element[0] << ", " << q.element[1] << ", " << q.element[2]
+      << "</td><td>" << fmt(q.uvw[0]) << ", " << fmt(q.uvw[1]) << ", " << fmt(q.uvw[2]) << "</td><td>"
+      << fmt(q.scaled_jacobian) << "</td><td>" << fmt(q.det_j) << "</td><td>" << fmt(q.condition) << "</td></tr>\n";
+  h << "</table>\n";
+  if (!r.fidelity.empty()) {
+    h << "<h2>Fidelity to the input surfaces (relative to the diagonal)</h2>\n<table>\n<tr><th>surface</th>"
+         "<th>faces</th><th>spline&rarr;mesh max</th><th>mean</th><th>95%</th><th>mesh&rarr;spline "
+         "max</th><th>mean</th><th>95%</th></tr>\n";
+    for (const auto& f : r.fidelity)
+      h << "<tr><td>" << esc(f.surface < static_cast<int>(r.surface_labels.size()) ? r.surface_labels[f.surface] : f.label)
+        << "</td><td>" << f.boundary_faces + f.interface_faces << "</td><td>" << fmt(f.spline_to_mesh.max_relative)
+        << "</td><td>" << fmt(f.spline_to_mesh.mean_relative) << "</td><td>" << fmt(f.spline_to_mesh.p95_relative)
+        << "</td><td>" << fmt(f.mesh_to_spline.max_relative) << "</td><td>" << fmt(f.mesh_to_spline.mean_relative)
+        << "</td><td>" << fmt(f.mesh_to_spline.p95_relative) << "</td></tr>\n";
+    h << "</table>\n";
+  }
+  const TopologyReport& t = r.topology;
+  h << "<h2>Topology and volumes</h2>\n<p>Interfaces: " << (t.conforming ? "conforming" : "NOT conforming")
+    << ", largest control-point gap " << fmt(t.interface_max_gap) << ". Outer boundary: "
+    << (t.watertight ? "watertight" : "NOT watertight") << ".</p>\n";
+  if (!t.regions.empty()) {
+    h << "<table>\n<tr><th>region</th><th>inside</th><th>patches</th><th>input volume</th><th>spline "
+         "volume</th><th>difference</th></tr>\n";
+    for (const auto& rv : t.regions)
+      h << "<tr><td>" << rv.region << "</td><td>"
+        << esc(rv.region < static_cast<int>(r.surface_labels.size()) ? r.surface_labels[rv.region] : "") << "</td><td>"
+        << rv.patches << "</td><td>" << fmt(rv.input_volume) << "</td><td>" << fmt(rv.spline_volume) << "</td><td>"
+        << (rv.patches > 0 ? fmt(100 * rv.relative_difference) + " %" : "void") << "</td></tr>\n";
+    h << "</table>\n";
+  }
+  h << "<table>\n<tr><th>material</th><th>volume</th></tr>\n";
+  for (size_t m = 0; m < t.material_volumes.size(); ++m)
+    h << "<tr><td>" << esc(m < r.material_names.size() ? r.material_names[m] : std::to_string(m)) << "</td><td>"
+      << fmt(t.material_volumes[m]) << "</td></tr>\n";
+  h << "</table>\n</body>\n</html>\n";
+  return h.str();
+}
+
+void write_report(const CheckReport& r, const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw bad_input("check: cannot create the report folder " + dir + ": " + ec.message());
+  const std::string json = report_json(r), html = report_html(r);
+  write_file_atomically((std::filesystem::path(dir) / "report.json").string(), [&](std::ostream& o) { o << json; });
+  write_file_atomically((std::filesystem::path(dir) / "report.html").string(), [&](std::ostream& o) { o << html; });
+}
+
+}  // namespace igaprep::iga_check

@@ -389,7 +389,7 @@ class Reader {
     long nv, nf;
     if (counts.size() < 2 || !parse_long(counts[0], nv) || !parse_long(counts[1], nf) || nv < 0 || nf < 0)
       fail("line " + std::to_string(lex.current_line()) + ": expected the vertex, face and edge counts");
-    s.xyz.reserve(3 * nv);
+    s.xyz.reserve(3 * static_cast<size_t>(std::min<long>(nv, static_cast<long>(data_.size() / 6))));  // a header can lie
     for (long i = 0; i < nv; ++i) {
       if (!lex.next_line(tok))
         fail("truncated: the header declares " + std::to_string(nv) + " vertices and " + std::to_string(nf) +

@@ -185,6 +185,7 @@ struct SharedModel {
   const char* file;
   int genus;
 };
+std::ostream& operator<<(std::ostream& out, const SharedModel& m) { return out << m.file; }
 class CheckSharedModel : public ::testing::TestWithParam<SharedModel> {};
 
 TEST_P(CheckSharedModel, GenusAndValidity) {

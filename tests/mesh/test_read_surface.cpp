@@ -97,6 +97,8 @@ struct GoodFile {
   double volume;
 };
 
+std::ostream& operator<<(std::ostream& out, const GoodFile& g) { return out << g.name; }
+
 class ReadGoodFile : public ::testing::TestWithParam<GoodFile> {};
 
 TEST_P(ReadGoodFile, CountsVolumeAndBox) {

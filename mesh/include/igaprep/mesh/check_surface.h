@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "igaprep/core/error.h"  // the functions here throw igaprep::Error
 #include "igaprep/mesh/tri_mesh.h"
 
 namespace igaprep::mesh {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "igaprep/core/error.h"  // the functions here throw igaprep::Error
 #include "igaprep/mesh/tri_mesh.h"
 
 namespace igaprep::mesh {

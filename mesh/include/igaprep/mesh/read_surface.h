@@ -4,6 +4,7 @@
 // file's content; the extension only breaks ties.
 #include <string>
 
+#include "igaprep/core/error.h"  // the functions here throw igaprep::Error
 #include "igaprep/mesh/tri_mesh.h"
 
 namespace igaprep::mesh {

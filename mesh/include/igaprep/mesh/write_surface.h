@@ -5,6 +5,7 @@
 // decimal form); binary STL stores single-precision floats.
 #include <string>
 
+#include "igaprep/core/error.h"  // the functions here throw igaprep::Error
 #include "igaprep/mesh/tri_mesh.h"
 
 namespace igaprep::mesh {

@@ -1,0 +1,146 @@
+// The check report: verdict and failed patches, report.html is one
+// self-contained file with SVG histograms, report.json has every key that
+// docs/check-report.md documents, with the documented type.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
+
+#include "check/check_models.h"
+#include "igaprep/iga_check/report.h"
+#include "igaprep/spline/refine.h"
+
+using namespace igaprep;
+using namespace igaprep::iga_check;
+
+namespace {
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+struct DocKey {
+  std::string path, type;
+};
+
+std::vector<DocKey> documented_keys() {
+  std::ifstream in(std::string(IGAPREP_SOURCE_DIR) + "/docs/check-report.md");
+  std::vector<DocKey> keys;
+  std::string line;
+  const std::regex row(R"(^\| `([^`]+)` \| ([a-z ]+) \|)");
+  std::smatch m;
+  while (std::getline(in, line))
+    if (std::regex_search(line, m, row)) keys.push_back({m[1], m[2]});
+  return keys;
+}
+
+bool has_type(const nlohmann::json& v, const std::string& type) {
+  if (type == "string") return v.is_string();
+  if (type == "integer") return v.is_number_integer();
+  if (type == "number") return v.is_number();
+  if (type == "number or null") return v.is_number() || v.is_null();
+  if (type == "boolean") return v.is_boolean();
+  if (type == "array") return v.is_array();
+  if (type == "object") return v.is_object();
+  ADD_FAILURE() << "unknown documented type " << type;
+  return false;
+}
+
+// Checks `path` (segments separated by '.', "name[]" = every element of the
+// array) in j; counts the values checked.
+void check_path(const nlohmann::json& j, const std::vector<std::string>& seg, size_t i, const DocKey& key, int* seen) {
+  if (i == seg.size()) {
+    ++*seen;
+    EXPECT_TRUE(has_type(j, key.type)) << key.path << " should be " << key.type << ", is " << j.dump().substr(0, 80);
+    return;
+  }
+  std::string s = seg[i];
+  const bool each = s.size() > 2 && s.substr(s.size() - 2) == "[]";
+  if (each) s = s.substr(0, s.size() - 2);
+  ASSERT_TRUE(j.is_object()) << key.path;
+  ASSERT_TRUE(j.contains(s)) << "report.json lacks documented key " << key.path;
+  if (!each) return check_path(j.at(s), seg, i + 1, key, seen);
+  ASSERT_TRUE(j.at(s).is_array()) << key.path;
+  for (const auto& e : j.at(s)) check_path(e, seg, i + 1, key, seen);
+}
+
+}  // namespace
+
+TEST(CheckReport, SphereShellReportFilesAndDocumentedKeys) {
+  const auto mp = check_test::sphere_shell(0.5, 1.0);
+  const std::vector<mesh::TriMesh> surfaces = {check_test::icosphere(1.0, 3), check_test::icosphere(0.5, 3)};
+  CheckOptions opt;
+  const CheckReport strict = build_check_report(mp, surfaces, {"outer", "inner"}, opt, "sphere_shell");
+  EXPECT_FALSE(strict.passed);  // the poles make degenerate elements
+  EXPECT_EQ(strict.failed_patches, (std::vector<int>{0, 1, 2, 3}));
+  opt.allow_degenerate = true;
+  const CheckReport r = build_check_report(mp, surfaces, {"outer", "inner"}, opt, "sphere_shell");
+  EXPECT_TRUE(r.passed) << r.verdict;
+  EXPECT_EQ(r.verdict.rfind("PASS", 0), 0u);
+
+  const std::string dir = std::string(IGAPREP_BINARY_DIR) + "/test_check_report";
+  std::filesystem::remove_all(dir);
+  write_report(r, dir);
+  const std::string html = slurp(dir + "/report.html");
+  ASSERT_FALSE(html.empty());
+  EXPECT_EQ(html.find("src="), std::string::npos);
+  EXPECT_EQ(html.find("href="), std::string::npos);
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  EXPECT_EQ(html.find("<link"), std::string::npos);
+  EXPECT_EQ(html.find("@import"), std::string::npos);
+  EXPECT_EQ(html.find("url("), std::string::npos);
+  size_t svgs = 0;
+  for (size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) ++svgs;
+  EXPECT_EQ(svgs, 2u);
+  EXPECT_NE(html.find("scaled Jacobian"), std::string::npos);
+  EXPECT_NE(html.find(r.verdict), std::string::npos);
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator{}), 2);
+
+  const nlohmann::json j = nlohmann::json::parse(slurp(dir + "/report.json"));
+  const auto keys = documented_keys();
+  ASSERT_GT(keys.size(), 100u);
+  for (const DocKey& k : keys) {
+    std::vector<std::string> seg;
+    std::stringstream ss(k.path);
+    for (std::string s; std::getline(ss, s, '.');) seg.push_back(s);
+    int seen = 0;
+    check_path(j, seg, 0, k, &seen);
+    EXPECT_GT(seen, 0) << "documented key " << k.path << " has no value to check in this report";
+  }
+  // Values, not only types.
+  EXPECT_EQ(j["summary"]["elements"], 4 * 2);
+  EXPECT_EQ(j["summary"]["degenerate"], 8);
+  EXPECT_EQ(j["topology"]["collapsed_sides"].size(), 8u);
+  EXPECT_EQ(j["fidelity"].size(), 2u);
+  EXPECT_EQ(j["topology"]["regions"][1]["patches"], 0);
+  EXPECT_TRUE(j["summary"]["passed"].get<bool>());
+  long total = 0;
+  for (long c : j["quality"]["scaled_jacobian"]["histogram"]["counts"]) total += c;
+  EXPECT_EQ(total, j["quality"]["scaled_jacobian"]["count"].get<long>());
+  // Same input, byte-identical output.
+  EXPECT_EQ(report_json(build_check_report(mp, surfaces, {"outer", "inner"}, opt, "sphere_shell")), report_json(r));
+}
+
+TEST(CheckReport, FoldedModelFailsAndNamesThePatch) {
+  auto fold = [](const Eigen::Vector3d& t) { return Eigen::Vector3d(t[0] + 3.0 * t[0] * (1 - t[0]) * t[1], t[1], t[2]); };
+  auto box = [](const Eigen::Vector3d& t) { return Eigen::Vector3d(t[0] + 2, t[1], t[2]); };
+  spline::MultiPatch mp = check_test::single(check_test::bezier_patch(box, {{2, 2, 2}}));
+  mp.patches.push_back(spline::refine_uniformly(check_test::bezier_patch(fold, {{2, 2, 2}}), 1));
+  const CheckReport r = build_check_report(mp, {}, {}, {}, "fold");
+  EXPECT_FALSE(r.passed);
+  EXPECT_EQ(r.failed_patches, std::vector<int>{1});
+  EXPECT_EQ(r.verdict.rfind("FAIL: patches 1 ", 0), 0u) << r.verdict;
+  ASSERT_FALSE(r.worst_elements.empty());
+  EXPECT_EQ(r.worst_elements[0].status, ElementStatus::Negative);
+  EXPECT_EQ(r.worst_elements[0].patch, 1);
+  EXPECT_TRUE(r.patches[0].passed);
+  EXPECT_EQ(r.patches[1].negative, 4);
+  EXPECT_FALSE(r.topology.watertight);  // patch 1 has no sides listed
+  EXPECT_FALSE(r.warnings.empty());
+}

@@ -1,0 +1,86 @@
+// Benchmark of the elasticity solver: assembly throughput (unknowns/s,
+// quadrature points/s), solve time and peak memory, for a cantilever box of
+// one B-spline patch at degree p with n elements per direction.
+// Usage: bench_solve_elasticity [p n [cholesky|cg]] ...   (default: the four
+// cases of docs/performance.md). Plain main: each case is one solve.
+#include <Eigen/Core>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "igaprep/iga_check/elasticity_solve.h"
+#include "igaprep/spline/knot_vector.h"
+
+using namespace igaprep;
+
+namespace {
+
+spline::MultiPatch box(int p, int n) {
+  spline::Patch pa;
+  pa.degrees = {p, p, p};
+  const double size[3] = {4.0, 1.0, 1.0};
+  std::vector<double> br(n + 1);
+  for (int i = 0; i <= n; ++i) br[i] = double(i) / n;
+  std::array<std::vector<double>, 3> g;
+  for (int d = 0; d < 3; ++d) {
+    pa.knots[d] = spline::knot_vector_from_breaks(br, p);
+    g[d] = spline::greville_abscissae(pa.knots[d], p);
+  }
+  pa.control_points.resize(pa.count(0) * pa.count(1) * pa.count(2), 3);
+  for (int k = 0; k < pa.count(2); ++k)
+    for (int j = 0; j < pa.count(1); ++j)
+      for (int i = 0; i < pa.count(0); ++i)
+        pa.control_points.row(pa.index(i, j, k)) << size[0] * g[0][i], size[1] * g[1][j], size[2] * g[2][k];
+  spline::MultiPatch mp;
+  mp.patches = {pa};
+  mp.materials = {{"steel", 210e9, 0.3}};
+  mp.labels = {"clamp", "tip"};
+  mp.boundaries = {{0, 1, 0}, {0, 2, 1}};
+  return mp;
+}
+
+long peak_memory_kib() {
+  std::ifstream f("/proc/self/status");
+  std::string line;
+  while (std::getline(f, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::atol(line.c_str() + 6);
+  return -1;
+}
+
+void run(int p, int n, iga_check::LinearSolver solver) {
+  iga_check::ElasticityProblem problem;
+  problem.fixed = {{"clamp", {{true, true, true}}}};
+  problem.tractions = {{"tip", Eigen::Vector3d(0, 0, -1e6)}};
+  iga_check::ElasticityOptions options;
+  options.solver = solver;
+  const auto sol = iga_check::solve_elasticity(box(p, n), problem, options);
+  const auto& r = sol.report;
+  std::printf(
+      "p=%d n=%d solver=%s unknowns=%lld nonzeros=%lld elements=%lld qpoints=%lld assembly=%.2fs "
+      "(%.3g unknowns/s, %.3g qpoints/s) solve=%.2fs total=%.2fs cg_iterations=%d energy=%.6g max_u=%.6g "
+      "VmHWM=%.0f MiB\n",
+      p, n, r.solver.c_str(), r.unknowns, r.nonzeros, r.elements, r.quadrature_points, r.assembly_seconds,
+      r.unknowns / r.assembly_seconds, r.quadrature_points / r.assembly_seconds, r.solve_seconds,
+      r.assembly_seconds + r.solve_seconds, r.cg_iterations, r.strain_energy, r.max_displacement,
+      peak_memory_kib() / 1024.0);
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc >= 3) {
+    const auto solver = (argc >= 4 && std::string(argv[3]) == "cg") ? iga_check::LinearSolver::ConjugateGradient
+                                                                     : iga_check::LinearSolver::Cholesky;
+    run(std::atoi(argv[1]), std::atoi(argv[2]), solver);
+    return 0;
+  }
+  // About 50,000 and 200,000 unknowns at p = 2 and 3.
+  run(2, 24, iga_check::LinearSolver::Cholesky);
+  run(3, 23, iga_check::LinearSolver::Cholesky);
+  run(2, 39, iga_check::LinearSolver::Cholesky);
+  run(3, 38, iga_check::LinearSolver::Cholesky);
+  return 0;
+}

@@ -49,10 +49,19 @@ void expect_read_error(const std::string& name, const std::string& words) {
   }
 }
 
+// A folder of this process's own, removed when the test program ends.
 std::string temp_dir() {
-  const auto dir = std::filesystem::temp_directory_path() / ("igaprep_meshio_test_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  return dir.string();
+  struct Folder {
+    std::filesystem::path path =
+        std::filesystem::temp_directory_path() / ("igaprep_meshio_test_" + std::to_string(::getpid()));
+    Folder() { std::filesystem::create_directories(path); }
+    ~Folder() {
+      std::error_code ec;
+      std::filesystem::remove_all(path, ec);
+    }
+  };
+  static Folder folder;
+  return folder.path.string();
 }
 
 // Subdivided octahedron on the unit sphere: coordinates that are not floats.

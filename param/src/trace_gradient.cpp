@@ -29,6 +29,7 @@ GradientTracer::GradientTracer(const Eigen::MatrixXd& V, const Eigen::MatrixXi& 
   const double range = u.size() ? u.maxCoeff() - u.minCoeff() : 0.0;
   const double diag = V.rows() ? (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm() : 0.0;
   grad_scale_ = (range > 0 && diag > 0) ? range / diag : 1.0;
+  diag_ = diag > 0 ? diag : 1.0;
 }
 
 namespace {
@@ -205,8 +206,16 @@ TraceResult GradientTracer::run(int c, const Eigen::Vector4d& bary_in, const Tra
   }
 
   GradPhi<K> gp;
+  // Zeno guard: steps that stay positive but shrink towards a critical point
+  // (typically sliding around a discrete maximum) move almost nowhere.
+  constexpr int kWindow = 64;
+  double window_length = 0.0;
   for (int iter = 0;; ++iter) {
     if (iter >= opt.max_steps) return finish(TraceStatus::StepBudget, c, b, -1);
+    if (iter > 0 && iter % kWindow == 0) {
+      if (window_length < 1e-9 * diag_) return finish(TraceStatus::Stalled, c, b, -1);
+      window_length = 0.0;
+    }
     // 1. The cell's own (piecewise-constant) gradient, or the averaged one where it is tiny.
     Step<K> st;
     Eigen::Vector3d d;
@@ -220,44 +229,57 @@ TraceResult GradientTracer::run(int c, const Eigen::Vector4d& bary_in, const Tra
       // Look at every cell around the point for one that lets the field
       // grow along a segment of positive length: first with the cells' own
       // gradients, then with the continuous averaged gradient, then sliding
-      // along the boundary. Always chooses the longest such segment.
+      // within a facet (a valley of the field, or the boundary), then along an
+      // edge. Within a pass: the steepest candidate, then the longest segment.
       collect_star(c, b);
       int best = -1;
-      double best_len = 0.0;
+      double best_len = 0.0, best_cos = -1.0;
       VecK<K> best_b;
       Step<K> best_st;
       Eigen::Vector3d best_d;
       GradPhi<K> gy;
-      bool on_boundary = false;
-      int boundary_facet = -1;
-      for (int pass = 0; pass < 3 && best < 0; ++pass) {
-        if (pass == 2 && !opt.slide_on_boundary) break;
+      for (int pass = 0; pass < 4 && best < 0; ++pass) {
         for (int y : star) {
           if (!grad_phi(y, gy)) continue;
           const VecK<K> by = transfer<K>(C_, c, b, y);
           const Eigen::Vector3d g = field_grad(y, gy);
+          // Every candidate must let the field grow in y (not shrink, where y's gradient is tiny),
+          // so the field is monotone along the whole trace and it cannot cycle.
           auto consider = [&](const Eigen::Vector3d& dy) {
             if (!(dy.norm() > tiny)) return;
+            const double rate = dy.dot(sign * g);
+            if (!(rate > 0 || (g.norm() <= tiny && rate >= 0))) return;
             const Step<K> sy = step_in<K>(gy, by, dy);
-            if (sy.ok && sy.length > best_len) {
-              best = y, best_len = sy.length, best_b = by, best_st = sy, best_d = dy;
+            if (!sy.ok) return;
+            // Steepest first (closest to the cell's gradient), then the longest segment.
+            const double cosine = g.norm() > tiny ? rate / (dy.norm() * g.norm()) : 0.0;
+            if (best < 0 || cosine > best_cos + 1e-9 || (cosine > best_cos - 1e-9 && sy.length > best_len)) {
+              best = y, best_len = sy.length, best_cos = cosine, best_b = by, best_st = sy, best_d = dy;
             }
           };
           if (pass == 0) {
             if (g.norm() > tiny) consider(sign * g);
           } else if (pass == 1) {
-            const Eigen::Vector3d dv = averaged_dir(y, by, gy);
-            // Only where the field does not decrease along it (grows, where the cell's gradient is not tiny).
-            const double rate = dv.dot(sign * g);
-            if (rate > 0 || (g.norm() <= tiny && rate >= 0)) consider(dv);
+            consider(averaged_dir(y, by, gy));
           } else {
+            // Slide within the facets (and, in tets, the edges) through the point:
+            // the way on along a valley of the piecewise-constant field, or along the boundary.
+            const Eigen::Vector3d dirs[2] = {Eigen::Vector3d(sign * g), averaged_dir(y, by, gy)};
             for (int k = 0; k < K; ++k) {
-              if (by(k) > kOnFacet || topo_.neighbor(y, k) >= 0) continue;
-              on_boundary = true;
-              if (boundary_facet < 0) boundary_facet = k, best_b = by, best = -1;
-              const Eigen::Vector3d nrm = gy.row(k).transpose().normalized();
-              for (const Eigen::Vector3d& dy : {Eigen::Vector3d(sign * g), averaged_dir(y, by, gy)})
-                consider(dy - dy.dot(nrm) * nrm);
+              if (by(k) > kOnFacet) continue;
+              if (topo_.neighbor(y, k) < 0 && !opt.slide_on_boundary) continue;
+              const Eigen::Vector3d nk = gy.row(k).transpose().normalized();
+              if (pass == 2)  // within a facet
+                for (const Eigen::Vector3d& dy : dirs) consider(dy - dy.dot(nk) * nk);
+              if constexpr (K == 4) {  // along an edge, where facet sliding is blocked
+                if (pass != 3) continue;
+                for (int l = k + 1; l < K; ++l) {
+                  if (by(l) > kOnFacet) continue;
+                  if (topo_.neighbor(y, l) < 0 && !opt.slide_on_boundary) continue;
+                  const Eigen::Vector3d e = nk.cross(gy.row(l).transpose()).normalized();
+                  for (const Eigen::Vector3d& dy : dirs) consider(dy.dot(e) * e);
+                }
+              }
             }
           }
         }
@@ -269,7 +291,6 @@ TraceResult GradientTracer::run(int c, const Eigen::Vector4d& bary_in, const Tra
           for (int k = 0; k < K; ++k)
             if (by(k) <= kOnFacet && topo_.neighbor(y, k) < 0) return finish(TraceStatus::HitBoundary, y, by, k);
         }
-        (void)on_boundary;
         return finish(TraceStatus::Stalled, c, b, -1);
       }
       c = best, b = best_b, st = best_st, d = best_d;
@@ -296,6 +317,7 @@ TraceResult GradientTracer::run(int c, const Eigen::Vector4d& bary_in, const Tra
     b(st.exit) = 0.0;
     clean<K>(b);
     path.push_back(position(c, b));
+    window_length += (path.back() - path[path.size() - 2]).norm();
     {
       int mx, mf;
       VecK<K> mb;

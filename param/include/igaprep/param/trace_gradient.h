@@ -34,6 +34,7 @@ struct TraceOptions {
   bool descend = false;           // follow -grad instead of +grad
   int max_steps = 1000000;        // budget of cell crossings and steps
   bool slide_on_boundary = true;  // at an unmarked boundary facet, follow the gradient projected onto it
+                                  // (inside the mesh, sliding along valley facets is always on)
   double tiny_gradient = 1e-10;   // |grad| below this times (field range / mesh size) counts as zero
 };
 
@@ -81,6 +82,7 @@ class GradientTracer {
   Eigen::VectorXd u_;
   Eigen::MatrixXd vertex_gradient_;
   double grad_scale_ = 1.0;  // field range / bounding-box diagonal
+  double diag_ = 1.0;        // bounding-box diagonal
 };
 
 }  // namespace igaprep::param

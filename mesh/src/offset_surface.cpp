@@ -51,17 +51,43 @@ double mean_edge_length(const TriMesh& m) {
   return sum / (3.0 * m.F.rows());
 }
 
-// Signed offset function: negative strictly deeper than D inside the surface.
+// Early-exit AABB traversal: is any input triangle closer than sqrt(r2) to p?
+// Much cheaper than a closest-point query, and the offset only needs that.
+struct WithinDistance {
+  const Tree* tree;
+  Point3 p;
+  double r2;
+  bool found = false;
+  bool go_further() const { return !found; }
+  void intersection(const Point3&, const Tree::Primitive& primitive) {
+    const auto triangle = CGAL::internal::Primitive_helper<Tree::AABB_traits>::get_datum(primitive, tree->traits());
+    if (CGAL::squared_distance(p, triangle) < r2) found = true;
+  }
+  template <class Node>
+  bool do_intersect(const Point3&, const Node& node) const {
+    const CGAL::Bbox_3& b = node.bbox();
+    double d2 = 0;
+    const double q[3] = {p.x(), p.y(), p.z()};
+    for (int i = 0; i < 3; ++i) {
+      const double lo = b.min(i), hi = b.max(i);
+      const double e = q[i] < lo ? lo - q[i] : (q[i] > hi ? q[i] - hi : 0.0);
+      d2 += e * e;
+    }
+    return d2 < r2;
+  }
+};
+
+// Offset indicator: -1 strictly deeper than D inside the surface, +1
+// elsewhere. Mesh_3's labelled domain only uses its sign.
 struct OffsetFunction {
   const Tree* tree;
   const Side* side;
   double distance;
   double operator()(const Point3& p) const {
-    const double d = std::sqrt(CGAL::to_double(tree->squared_distance(p)));
-    // Within D of the surface the value is positive on either side, so the
-    // (costlier) inside test is needed only farther away.
-    if (d < distance) return distance - d;  // inside or outside: both > 0 here
-    return (*side)(p) == CGAL::ON_BOUNDED_SIDE ? distance - d : distance + d;
+    WithinDistance near{tree, p, distance * distance};
+    tree->traversal(p, near);
+    if (near.found) return 1.0;  // within D of the surface, on either side
+    return (*side)(p) == CGAL::ON_BOUNDED_SIDE ? -1.0 : 1.0;
   }
 };
 
@@ -102,7 +128,7 @@ TriMesh offset_inward(const TriMesh& surface, const OffsetOptions& options) {
   CGAL::Random rng(0);
 
   Tree tree(faces(sm).first, faces(sm).second, sm);
-  tree.accelerate_distance_queries();
+  tree.build();
   Side side(tree);
   OffsetFunction f{&tree, &side, D};
 

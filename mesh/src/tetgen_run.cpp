@@ -96,6 +96,8 @@ TetgenOutput run_tetgen(tetgenio& in, const std::string& switches, bool echo, co
     // Child: TetGen's stdout goes to the log; results go to the pipe.
     ::close(fds[0]);
     ::dup2(fileno(log), 1);
+    // Unbuffered, so that TetGen's last words survive a crash.
+    std::setvbuf(stdout, nullptr, _IONBF, 0);
     tetgenio out;
     std::int64_t header[4] = {kMagicFail, 0, 0, 0};
     try {
@@ -165,9 +167,9 @@ TetgenOutput run_tetgen(tetgenio& in, const std::string& switches, bool echo, co
     throw bad_input(what + ": TetGen failed: " + code_reason(static_cast<int>(header[1])) + tetgen_said);
   }
   if (WIFSIGNALED(status) || header[0] != kMagicOk) {
-    std::string how = WIFSIGNALED(status) ? "stopped by signal " + std::to_string(WTERMSIG(status))
-                                          : "exited with status " + std::to_string(WEXITSTATUS(status));
-    throw bad_input(what + ": TetGen failed on this input (" + how + ")" + tetgen_said);
+    const std::string how = WIFSIGNALED(status) ? "its process ended with signal " + std::to_string(WTERMSIG(status))
+                                                : "its process exited with status " + std::to_string(WEXITSTATUS(status));
+    throw bad_input(what + ": TetGen failed on this input" + (said.empty() ? "" : ": " + said) + " (" + how + ")");
   }
   const std::int64_t np = header[1], nt = header[2], nc = header[3];
   const std::size_t need = sizeof header + sizeof(double) * 3 * np + sizeof(int) * (nc + 4) * nt;

@@ -143,7 +143,8 @@ TetMesh tetrahedralize(const std::vector<TriMesh>& surfaces, const std::vector<T
     std::snprintf(buf, sizeof buf, "a%.17g", options.max_volume);
     switches += buf;
   }
-  if (options.quiet) switches += "Q";
+  // No Q: TetGen then also prints why it fails; its output is captured and
+  // shown only when options.quiet is false.
 
   const detail::TetgenOutput result =
       detail::run_tetgen(in, switches, !options.quiet, "tetrahedralize (" + std::to_string(all.size()) + " surfaces)");

@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <cmath>
+#include <cstdio>
 #include <Eigen/Geometry>
 #include <filesystem>
 #include <string>
@@ -141,6 +142,7 @@ TEST(Offset, PelvisTooDeepIsRefused) {
     FAIL() << "a 20 mm offset of the pelvis was accepted";
   } catch (const igaprep::Error& e) {
     const std::string msg = e.what();
+    std::printf("message: %s\n", msg.c_str());
     EXPECT_EQ(e.kind(), igaprep::ErrorKind::BadInput) << msg;
     EXPECT_TRUE(msg.find("topology") != std::string::npos || msg.find("vanishes") != std::string::npos) << msg;
     EXPECT_NE(msg.find("thinner than 2 D"), std::string::npos) << msg;

@@ -134,24 +134,38 @@ TEST(Tetrahedralize, NestedSpheres) {
 }
 
 TEST(Tetrahedralize, ThreeShellsWithMaxVolume) {
-  const std::vector<TriMesh> shells{igaprep::models::make_ellipsoid(1, 1, 1, 2),
-                                    igaprep::models::make_ellipsoid(0.7, 0.7, 0.7, 2),
-                                    igaprep::models::make_ellipsoid(0.3, 0.3, 0.3, 1)};
+  const std::vector<TriMesh> shells{igaprep::models::make_ellipsoid(1, 1, 1, 3),
+                                    igaprep::models::make_ellipsoid(0.7, 0.7, 0.7, 3),
+                                    igaprep::models::make_ellipsoid(0.3, 0.3, 0.3, 2)};
+  const double bound = 0.0005;
   igaprep::mesh::TetgenOptions opt;
-  opt.max_volume = 0.002;
+  opt.max_volume = bound;
   const TetMesh tm = igaprep::mesh::tetrahedralize(shells, {}, opt);
   check_tet_mesh(tm, shells, {});
-  // -Y forbids splitting boundary faces, so TetGen may leave a few tets at the
-  // surfaces above the bound; the interior must respect it.
-  int above = 0;
+  // -Y forbids Steiner points on the input triangles, so TetGen rejects
+  // refinement points that would encroach on them: tets touching an input
+  // surface may exceed the bound somewhat; tets away from them must not.
+  int input_points = 0;
+  for (const auto& sh : shells) input_points += static_cast<int>(sh.V.rows());
+  int above = 0, above_off_surface = 0;
   double largest = 0;
   for (Eigen::Index t = 0; t < tm.T.rows(); ++t) {
-    above += tet_volume(tm, t) > 0.002 * (1 + 1e-9);
+    const bool over = tet_volume(tm, t) > bound * (1 + 1e-9);
+    const int on_surface = (tm.T.row(t).array() < input_points).count();
+    above += over;
+    above_off_surface += over && on_surface == 0;
     largest = std::max(largest, tet_volume(tm, t));
   }
-  std::printf("max-volume bound 0.002: %d of %d tets above, largest %g\n", above, int(tm.T.rows()), largest);
-  EXPECT_LE(above, 0.01 * tm.T.rows());
-  EXPECT_GT(tm.T.rows(), 0.5 * (4.0 / 3.0 * M_PI) / 0.002);
+  std::printf("max-volume bound %g: %d of %d tets above (%d not touching an input surface), largest %g\n", bound, above,
+              int(tm.T.rows()), above_off_surface, largest);
+  EXPECT_EQ(above_off_surface, 0);
+  EXPECT_LE(above, 0.02 * tm.T.rows());
+  EXPECT_LE(largest, 2 * bound);
+  const TetMesh free = igaprep::mesh::tetrahedralize(shells);
+  double largest_free = 0;
+  for (Eigen::Index t = 0; t < free.T.rows(); ++t) largest_free = std::max(largest_free, tet_volume(free, t));
+  EXPECT_GT(largest_free, 2 * bound);  // without it TetGen makes larger tets
+  EXPECT_GT(tm.T.rows(), free.T.rows());
 }
 
 TEST(Tetrahedralize, EmbeddedDiscAndClosedSurface) {
@@ -181,6 +195,23 @@ TEST(Tetrahedralize, IntersectingSurfacesAreRefused) {
   } catch (const igaprep::Error& e) {
     EXPECT_EQ(e.kind(), igaprep::ErrorKind::BadInput) << e.what();
     EXPECT_NE(std::string(e.what()).find("intersect"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Tetrahedralize, TetgenFailureIsAnErrorNotACrash) {
+  // One self-intersecting surface (a vertex pulled through the solid to the
+  // other side): only TetGen sees it; its failure must come back as an error.
+  TriMesh s = igaprep::models::make_ellipsoid(1, 1, 1, 2);
+  Eigen::Index top = 0;
+  s.V.col(2).maxCoeff(&top);
+  s.V.row(top) << 0.01, 0.02, -1.6;
+  try {
+    igaprep::mesh::tetrahedralize({s});
+    FAIL() << "a self-intersecting surface was accepted";
+  } catch (const igaprep::Error& e) {
+    EXPECT_EQ(e.kind(), igaprep::ErrorKind::BadInput) << e.what();
+    EXPECT_NE(std::string(e.what()).find("TetGen"), std::string::npos) << e.what();
+    std::printf("message: %s\n", e.what());
   }
 }
 

@@ -15,7 +15,13 @@ struct IsoSurface {
 };
 
 // Inputs: V (#V x 3), T (#T x 4, positively oriented), field (#V), iso value.
-// Triangles are oriented with their normal towards increasing field.
+// Triangles are oriented with their normal towards increasing field (decided
+// combinatorially from the tet's orientation, not from round-off).
+// A vertex with field == iso counts as above: the surface is that of the
+// field lowered infinitesimally, so it is a manifold wherever the tet mesh
+// is; such vertices give output points with t = 0 or 1 that coincide with
+// them (and zero-area triangles next to them). Every cut edge gives one
+// output vertex, edge(i, 0) < edge(i, 1).
 IsoSurface marching_tets(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, const Eigen::VectorXd& field,
                          double iso);
 

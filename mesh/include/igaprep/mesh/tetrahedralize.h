@@ -11,8 +11,10 @@ namespace igaprep::mesh {
 
 struct TetgenOptions {
   double radius_edge_ratio = 1.5;  // TetGen -q bound; 0 switches quality refinement off
-  double max_volume = 0.0;         // TetGen -a bound; 0 = no bound
-  bool quiet = true;               // TetGen -Q
+  double max_volume = 0.0;         // TetGen -a bound; 0 = no bound. With -Y (input
+                                   // triangles never split) tets touching an input
+                                   // surface may exceed it somewhat.
+  bool quiet = true;               // false: copy TetGen's output to stdout
 };
 
 // Inputs: `surfaces` are closed, validated, nested (T1 outermost);
@@ -23,7 +25,13 @@ struct TetgenOptions {
 // material 0 between T1 and T2, ..., n-1 inside Tn); F/F_marker list every
 // input triangle with marker = surface index (0..n-1), then every embedded
 // triangle with marker n + k for embedded surface k.
-// Throws Error(BadInput) with TetGen's reason when it fails.
+// Materials come from a flood fill across tet faces not on T1..Tn, each region
+// classified by exact inside tests (CGAL), so embedded closed surfaces do not
+// split a material. Tets are positively oriented; deterministic.
+// Throws Error(BadInput) naming the surfaces when two of them intersect
+// (checked exactly before meshing), and with TetGen's own reason when it
+// fails; TetGen runs in a child process, so its crashes and exit() calls on
+// bad input cannot take the caller down.
 TetMesh tetrahedralize(const std::vector<TriMesh>& surfaces, const std::vector<TriMesh>& embedded = {},
                        const TetgenOptions& options = {});
 

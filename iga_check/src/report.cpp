@@ -164,14 +164,16 @@ CheckReport build_check_report(const spline::MultiPatch& mp, const std::vector<m
   for (const auto& c : r.certificates) ++counts[static_cast<int>(c.status)];
   std::ostringstream v;
   if (r.passed) {
-    v << "PASS: all " << r.certificates.size() << " elements of " << mp.patches.size()
-      << " patches have a certified positive Jacobian";
-    if (counts[2] > 0) v << " (" << counts[2] << " degenerate on the boundary, allowed)";
+    v << "PASS: all " << r.certificates.size() << " elements of " << mp.patches.size() << " patches certified: "
+      << counts[0] << " positive";
+    if (counts[2] > 0) v << ", " << counts[2] << " degenerate (det J = 0 only on the element boundary, allowed)";
   } else {
     v << "FAIL: patches";
     for (int p : r.failed_patches) v << ' ' << p;
     v << " not certified positive (" << counts[1] << " negative, " << counts[2] << " degenerate"
       << (options.allow_degenerate ? " allowed" : "") << ", " << counts[3] << " undecided elements)";
+    if (!options.allow_degenerate && counts[1] == 0 && counts[3] == 0)
+      v << "; only degenerate elements fail: --allow-degenerate accepts them";
   }
   r.verdict = v.str();
   return r;

@@ -1,8 +1,7 @@
 #pragma once
 // Pointwise quality of the parameterization at a dense set of points per
-// element: for each element the Gauss points ((p+1) per direction), and a
-// regular sub-grid (including the corners), combined as a tensor grid per
-// direction. Per point: det J, the scaled Jacobian det J / (|x_u| |x_v| |x_w|)
+// element: in each direction the union of a regular sub-grid (corners
+// included) and the p+1 Gauss points, taken as a tensor grid. Per point: det J, the scaled Jacobian det J / (|x_u| |x_v| |x_w|)
 // (1 for orthogonal columns, <= 0 where inverted) and the Frobenius condition
 // number |J|_F |J^-1|_F / 3 (1 for a conformal J, infinite where singular).
 #include <Eigen/Core>

@@ -1,0 +1,194 @@
+// Bad input to the solver: singular constraints, unknown labels, invalid
+// materials: clear bad_input errors. Through the CLI: exit 1 and no output.
+// Also the two linear solvers agree, and the CLI result file round-trips.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "igaprep/core/error.h"
+#include "igaprep/export/hdf5_model.h"
+#include "igaprep/iga_check/elasticity_solve.h"
+#include "solve_models.h"
+
+using namespace igaprep;
+using namespace solve_test;
+namespace fs = std::filesystem;
+
+namespace {
+
+MultiPatch two_boxes() {
+  MultiPatch mp;
+  mp.patches = {box_patch({0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {2, 2, 2}),
+                box_patch({1, 0, 0}, {2, 1, 1}, {2, 2, 2}, {2, 2, 2})};
+  mp.materials = {{"steel", 1000.0, 0.3}};
+  find_interfaces(mp);
+  label_boundaries(mp, [](const Eigen::Vector3d& x) {
+    if (std::abs(x(0)) < 1e-9) return std::string("base");
+    if (std::abs(x(0) - 2) < 1e-9) return std::string("end");
+    return std::string("free");
+  });
+  return mp;
+}
+
+iga_check::ElasticityProblem clamped_pulled() {
+  iga_check::ElasticityProblem p;
+  p.fixed = {{"base", {{true, true, true}}}};
+  p.tractions = {{"end", Eigen::Vector3d(1.0, 0.5, -0.25)}};
+  return p;
+}
+
+// Runs f, expects a bad_input whose message contains every fragment.
+template <class F>
+void expect_bad_input(F f, const std::vector<std::string>& fragments) {
+  try {
+    f();
+    ADD_FAILURE() << "no error thrown";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::BadInput) << e.what();
+    for (const auto& s : fragments) EXPECT_NE(std::string(e.what()).find(s), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+
+TEST(SolveBadInput, SingularConstraintsNameTheFreeMotion) {
+  MultiPatch mp = two_boxes();
+  ASSERT_EQ(mp.interfaces.size(), 1u);
+  auto problem = clamped_pulled();
+  problem.fixed = {{"base", {{true, false, false}}}};  // only u_x = 0 on a plane: y, z, rotation about x free
+  expect_bad_input([&] { iga_check::solve_elasticity(mp, problem); }, {"rigid-body", "free"});
+  problem.fixed.clear();
+  expect_bad_input([&] { iga_check::solve_elasticity(mp, problem); }, {"6 rigid-body motions"});
+  // Without the interface the second box floats: caught per connected part.
+  MultiPatch apart = mp;
+  apart.interfaces.clear();
+  apart.boundaries.push_back({0, 2, 2});
+  apart.boundaries.push_back({1, 1, 2});
+  expect_bad_input([&] { iga_check::solve_elasticity(apart, clamped_pulled()); }, {"patch 1", "rigid-body"});
+}
+
+TEST(SolveBadInput, UnknownLabelsAndLabelsWithoutSides) {
+  MultiPatch mp = two_boxes();
+  auto problem = clamped_pulled();
+  problem.fixed.push_back({"nowhere", {{true, true, true}}});
+  expect_bad_input([&] { iga_check::solve_elasticity(mp, problem); }, {"unknown label 'nowhere'", "base"});
+  problem = clamped_pulled();
+  problem.pressures.push_back({"missing", 1.0});
+  expect_bad_input([&] { iga_check::solve_elasticity(mp, problem); }, {"--pressure", "'missing'"});
+  problem = clamped_pulled();
+  mp.labels.push_back("unused");
+  problem.tractions.push_back({"unused", Eigen::Vector3d(1, 0, 0)});
+  expect_bad_input([&] { iga_check::solve_elasticity(mp, problem); }, {"'unused'", "no boundary side"});
+}
+
+TEST(SolveBadInput, InvalidMaterials) {
+  MultiPatch mp = two_boxes();
+  mp.materials[0].young_modulus = -5.0;
+  expect_bad_input([&] { iga_check::solve_elasticity(mp, clamped_pulled()); }, {"steel", "Young's modulus", "-5"});
+  mp = two_boxes();
+  mp.materials[0].poisson_ratio = 0.5;
+  expect_bad_input([&] { iga_check::solve_elasticity(mp, clamped_pulled()); }, {"Poisson ratio", "0.5"});
+  mp.materials[0].poisson_ratio = 0.62;
+  expect_bad_input([&] { iga_check::solve_elasticity(mp, clamped_pulled()); }, {"Poisson ratio"});
+}
+
+TEST(SolveLinearSolvers, ConjugateGradientsAgreeWithCholesky) {
+  iga_check::ElasticityOptions options;
+  options.refine = 1;
+  const auto chol = iga_check::solve_elasticity(two_boxes(), clamped_pulled(), options);
+  options.solver = iga_check::LinearSolver::ConjugateGradient;
+  options.cg_tolerance = 1e-12;
+  const auto cg = iga_check::solve_elasticity(two_boxes(), clamped_pulled(), options);
+  EXPECT_GT(cg.report.cg_iterations, 0);
+  EXPECT_EQ(cg.report.unknowns, chol.report.unknowns);
+  EXPECT_NEAR(cg.report.strain_energy, chol.report.strain_energy, 1e-9 * chol.report.strain_energy);
+  double diff = 0;
+  for (size_t p = 0; p < 2; ++p)
+    diff = std::max(diff, (cg.model.patches[p].displacement - chol.model.patches[p].displacement).cwiseAbs().maxCoeff());
+  EXPECT_LT(diff, 1e-9 * chol.report.max_displacement);
+  // Work of the load equals twice the strain energy (Clapeyron).
+  EXPECT_GT(chol.report.strain_energy, 0.0);
+}
+
+// The CLI: a good run writes the result (checked by reading it back), bad
+// input writes nothing. Needs the igaprep executable with its solve command.
+class SolveCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!fs::exists(IGAPREP_CLI)) GTEST_SKIP() << "igaprep executable not built: " << IGAPREP_CLI;
+    dir_ = fs::temp_directory_path() / ("igaprep_solve_cli_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+    const std::string help = (dir_ / "help.txt").string();
+    std::system((std::string(IGAPREP_CLI) + " solve --help > " + help + " 2>&1").c_str());
+    std::ifstream f(help);
+    const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    if (text.find("--pressure") == std::string::npos)
+      GTEST_SKIP() << "the igaprep executable has no solve command registered (cli/commands.cpp)";
+    model_ = (dir_ / "model.h5").string();
+    exporter::write_hdf5_model(two_boxes(), model_);
+  }
+  void TearDown() override {
+    if (!dir_.empty()) fs::remove_all(dir_);
+  }
+  int run(const std::string& args, const std::string& out) {
+    const std::string cmd = std::string(IGAPREP_CLI) + " solve " + model_ + " -o " + out + " " + args + " > " +
+                            (dir_ / "log.txt").string() + " 2>&1";
+    const int status = std::system(cmd.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  std::string log() {
+    std::ifstream f(dir_ / "log.txt");
+    return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  }
+  fs::path dir_;
+  std::string model_;
+};
+
+TEST_F(SolveCli, ResultFileCarriesTheSolution) {
+  const std::string out = (dir_ / "result.h5").string();
+  ASSERT_EQ(run("--fix base --traction end=1,0.5,-0.25 --refine 1", out), 0) << log();
+  const MultiPatch r = exporter::read_hdf5_model(out);
+  iga_check::ElasticityOptions options;
+  options.refine = 1;
+  const auto direct = iga_check::solve_elasticity(two_boxes(), clamped_pulled(), options);
+  ASSERT_TRUE(r.has_solution);
+  ASSERT_EQ(r.patches.size(), 2u);
+  EXPECT_NEAR(r.strain_energy, direct.report.strain_energy, 1e-12 * direct.report.strain_energy);
+  EXPECT_NEAR(r.max_displacement, direct.report.max_displacement, 1e-12 * direct.report.max_displacement);
+  for (size_t p = 0; p < 2; ++p) {
+    EXPECT_EQ(r.patches[p].control_points.rows(), direct.model.patches[p].control_points.rows());
+    EXPECT_LT((r.patches[p].displacement - direct.model.patches[p].displacement).cwiseAbs().maxCoeff(),
+              1e-12 * direct.report.max_displacement);
+  }
+}
+
+TEST_F(SolveCli, BadInputExitsOneAndWritesNothing) {
+  const std::vector<std::string> bad = {
+      "--fix base:x --traction end=1,0,0",   // singular
+      "--fix nowhere --traction end=1,0,0",  // unknown label
+      "--fix base:q",                        // bad component
+      "--fix base --pressure end=abc",       // not a number
+      "--fix base --traction end=1,2",       // two components
+      "--fix base --solver lu",              // unknown solver
+  };
+  for (const auto& args : bad) {
+    const std::string out = (dir_ / "bad.h5").string();
+    EXPECT_EQ(run(args, out), 1) << args << "\n" << log();
+    EXPECT_NE(log().find("error: "), std::string::npos) << log();
+    EXPECT_FALSE(fs::exists(out)) << args;
+  }
+  // Invalid material in the file.
+  MultiPatch mp = two_boxes();
+  mp.materials[0].poisson_ratio = 0.5;
+  exporter::write_hdf5_model(mp, model_);
+  const std::string out = (dir_ / "bad.h5").string();
+  EXPECT_EQ(run("--fix base --traction end=1,0,0", out), 1) << log();
+  EXPECT_NE(log().find("Poisson ratio"), std::string::npos) << log();
+  EXPECT_FALSE(fs::exists(out));
+}

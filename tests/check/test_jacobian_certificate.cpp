@@ -206,3 +206,25 @@ TEST(JacobianCertificate, RejectsNonPositiveWeight) {
   p.weights[1] = -0.5;
   EXPECT_THROW(certify_patch(p, 3), igaprep::Error);
 }
+
+TEST(JacobianCertificate, InteriorZeroIsUndecidedNotDegenerate) {
+  // det J = 3 (u - 1/2)^2: zero on the interior plane u = 1/2, never negative.
+  // Neither positive nor degenerate (the zero is not on the element boundary).
+  auto cubic = [](const Eigen::Vector3d& t) {
+    return Eigen::Vector3d(std::pow(t[0] - 0.5, 3), t[1], t[2]);
+  };
+  const spline::Patch p = bezier_patch(cubic, {{3, 1, 1}});
+  CertifyOptions opt;
+  opt.max_depth = 10;
+  opt.max_boxes = 200;
+  const auto certs = certify_patch(p, 0, opt);
+  ASSERT_EQ(certs.size(), 1u);
+  EXPECT_EQ(certs[0].status, ElementStatus::Undecided);
+  EXPECT_LE(certs[0].lower_bound, 0.0);
+  EXPECT_GE(certs[0].upper_bound, -1e-12);
+  EXPECT_LE(certs[0].boxes, opt.max_boxes);
+  // An element that vanishes identically (all control points equal along w).
+  auto flat = [](const Eigen::Vector3d& t) { return Eigen::Vector3d(t[0], t[1], 0.0); };
+  const auto flat_certs = certify_patch(bezier_patch(flat, {{1, 1, 1}}), 0);
+  EXPECT_EQ(flat_certs[0].status, ElementStatus::Undecided);
+}

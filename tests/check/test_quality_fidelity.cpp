@@ -152,3 +152,54 @@ TEST(Topology, SphereShellWatertightVolumesAndCertificate) {
   }
   EXPECT_EQ(degenerate, 8);
 }
+
+TEST(Fidelity, MaterialInterfaceOfTwoShells) {
+  // Two shells: patches 0-3 between radii 0.5 and 0.75 (material 1), patches
+  // 4-7 between 0.75 and 1 (material 0); their common sphere is label 1.
+  auto inner = check_test::sphere_shell(0.5, 0.75);
+  auto outer = check_test::sphere_shell(0.75, 1.0);
+  spline::MultiPatch mp = outer;
+  mp.boundaries.clear();
+  mp.patches.insert(mp.patches.end(), inner.patches.begin(), inner.patches.end());
+  for (int q = 0; q < 4; ++q) {
+    mp.patches[4 + q].material = 1;
+    spline::Interface itf = inner.interfaces[q];
+    itf.patch_a += 4;
+    itf.patch_b += 4;
+    mp.interfaces.push_back(itf);
+    spline::Interface radial;
+    radial.patch_a = q;
+    radial.side_a = spline::kW0;
+    radial.patch_b = 4 + q;
+    radial.side_b = spline::kW1;
+    radial.surface = 1;
+    mp.interfaces.push_back(radial);
+    mp.boundaries.push_back({q, spline::kW1, 0});
+    mp.boundaries.push_back({4 + q, spline::kW0, 2});
+  }
+  mp.labels = {"outer", "middle", "inner"};
+  mp.materials = {{"outer", 1.0, 0.3}, {"inner", 1.0, 0.3}};
+  const std::vector<mesh::TriMesh> surfaces = {check_test::icosphere(1.0, 3), check_test::icosphere(0.75, 3),
+                                               check_test::icosphere(0.5, 3)};
+  FidelityOptions opt;
+  opt.samples_per_element = 60;
+  const auto fid = fidelity(mp, surfaces, 0.0, opt);
+  ASSERT_EQ(fid.size(), 3u);
+  EXPECT_EQ(fid[1].interface_faces, 4);
+  EXPECT_EQ(fid[1].boundary_faces, 0);
+  EXPECT_NEAR(fid[1].spline_to_mesh.max, max_sagitta(surfaces[1], 0.75), 1e-4 * 0.75);
+  EXPECT_LT(fid[1].mesh_to_spline.max, 1e-8);
+
+  const TopologyReport t = topology_checks(mp, surfaces);
+  EXPECT_TRUE(t.conforming) << (t.conformity_problems.empty() ? "" : t.conformity_problems[0]);
+  EXPECT_TRUE(t.watertight) << (t.watertight_problems.empty() ? "" : t.watertight_problems[0]);
+  ASSERT_EQ(t.regions.size(), 3u);
+  EXPECT_EQ(t.regions[0].patches, 4);
+  EXPECT_EQ(t.regions[1].patches, 4);
+  EXPECT_EQ(t.regions[2].patches, 0);
+  const double v0 = 4.0 / 3.0 * M_PI * (1.0 - 0.421875), v1 = 4.0 / 3.0 * M_PI * (0.421875 - 0.125);
+  ASSERT_EQ(t.material_volumes.size(), 2u);
+  EXPECT_NEAR(t.material_volumes[0], v0, 1e-6 * v0);
+  EXPECT_NEAR(t.material_volumes[1], v1, 1e-6 * v1);
+  EXPECT_NEAR(t.regions[1].spline_volume, v1, 1e-6 * v1);
+}

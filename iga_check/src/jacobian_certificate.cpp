@@ -7,6 +7,7 @@
 #include <string>
 
 #include "igaprep/core/error.h"
+#include "igaprep/core/progress.h"
 
 namespace igaprep::iga_check {
 
@@ -344,10 +345,13 @@ std::vector<ElementCertificate> certify_patch(const spline::Patch& p, int patch_
 
 std::vector<ElementCertificate> certify_model(const spline::MultiPatch& mp, const CertifyOptions& options) {
   std::vector<ElementCertificate> out;
+  Progress progress("certify Jacobians", mp.patches.size());
   for (size_t i = 0; i < mp.patches.size(); ++i) {
     auto part = certify_patch(mp.patches[i], static_cast<int>(i), options);
     out.insert(out.end(), part.begin(), part.end());
+    progress.update(i + 1);
   }
+  progress.finish();
   return out;
 }
 

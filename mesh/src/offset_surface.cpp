@@ -1,5 +1,8 @@
 #include "igaprep/mesh/offset_surface.h"
 
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
 #include <CGAL/Labeled_mesh_domain_3.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
@@ -211,6 +214,32 @@ TriMesh offset_inward(const TriMesh& surface, const OffsetOptions& options) {
     throw refuse("changes the topology (genus " + std::to_string(topo_in.genus) + " -> " +
                  std::to_string(topo_out.genus) + ", " + std::to_string(topo_in.components) + " -> " +
                  std::to_string(topo_out.components) + " components)");
+  }
+  // Parts of the solid thinner than 2 D vanish without changing the topology
+  // (e.g. a thin blade or rim): every input vertex must have the offset within
+  // a few D (at a convex edge with dihedral angle a, the nearest offset point is
+  // D / sin(a / 2) away; 4 D allows edges down to about 30 degrees).
+  {
+    using OutTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<SurfaceMesh>>>;
+    OutTree out_tree(faces(out_sm).first, faces(out_sm).second, out_sm);
+    out_tree.accelerate_distance_queries();
+    const double limit = 4.0 * D;
+    int far = 0, first_far = -1;
+    double farthest = 0;
+    for (Eigen::Index i = 0; i < surface.V.rows(); ++i) {
+      const double d2 = out_tree.squared_distance(Point3(surface.V(i, 0), surface.V(i, 1), surface.V(i, 2)));
+      if (d2 > limit * limit) {
+        if (first_far < 0) first_far = static_cast<int>(i);
+        ++far;
+        farthest = std::max(farthest, std::sqrt(d2));
+      }
+    }
+    if (far > 0) {
+      const Eigen::RowVector3d q = surface.V.row(first_far);
+      throw refuse("vanishes in places: " + std::to_string(far) + " input vertices (e.g. vertex " +
+                   std::to_string(first_far) + " at (" + fmt(q(0)) + ", " + fmt(q(1)) + ", " + fmt(q(2)) +
+                   ")) are more than 4 D from the offset surface, up to " + fmt(farthest / D) + " D");
+    }
   }
   if (!PMP::is_outward_oriented(out_sm)) {
     PMP::reverse_face_orientations(out_sm);

@@ -149,3 +149,21 @@ TEST(Offset, PelvisTooDeepIsRefused) {
     EXPECT_NE(msg.find("try D <"), std::string::npos) << msg;
   }
 }
+
+TEST(Offset, PropellerBladesVanishingIsRefused) {
+  // The blades are thinner than 0.6 mm near their edges: at D = 0.3 the hub
+  // keeps its genus, but parts of the solid have no inner surface any more.
+  const std::string path = std::string(IGAPREP_SHARED_MODELS_DIR) + "/propeller.stl";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared model " << path << " is absent";
+  const TriMesh outer = igaprep::mesh::read_surface(path);
+  try {
+    igaprep::mesh::offset_inward(outer, {0.3});
+    FAIL() << "a 0.3 mm offset of the propeller was accepted";
+  } catch (const igaprep::Error& e) {
+    const std::string msg = e.what();
+    std::printf("message: %s\n", msg.c_str());
+    EXPECT_EQ(e.kind(), igaprep::ErrorKind::BadInput) << msg;
+    EXPECT_NE(msg.find("vanishes"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("try D <"), std::string::npos) << msg;
+  }
+}

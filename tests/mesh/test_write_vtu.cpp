@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "igaprep/core/error.h"
 #include "igaprep/mesh/tetrahedralize.h"
 #include "igaprep/mesh/write_vtu.h"
@@ -15,6 +17,11 @@
 namespace {
 
 namespace fs = std::filesystem;
+
+// Per-process temporary names: ctest may run these tests in parallel.
+fs::path temp_file(const std::string& name) {
+  return fs::temp_directory_path() / ("igaprep_" + std::to_string(::getpid()) + "_" + name);
+}
 
 std::string run(const std::string& command) {
   std::string out;
@@ -39,11 +46,13 @@ std::string read_with_vtk(const std::string& path, const std::string& extra) {
       "g = r.GetOutput()\n"
       "print(g.GetNumberOfPoints(), g.GetNumberOfCells())\n" +
       extra;
-  const fs::path py = fs::temp_directory_path() / "igaprep_read_vtu.py";
+  const fs::path py = temp_file("read_vtu.py");
   FILE* f = std::fopen(py.c_str(), "w");
   std::fputs(script.c_str(), f);
   std::fclose(f);
-  return run(std::string(IGAPREP_PYTHON) + " " + py.string() + " " + path + " 2>&1");
+  const std::string out = run(std::string(IGAPREP_PYTHON) + " " + py.string() + " " + path + " 2>&1");
+  fs::remove(py);
+  return out;
 }
 
 }  // namespace
@@ -57,7 +66,7 @@ TEST(WriteVtu, TetMeshRoundTripThroughVtk) {
   vtu.add_point_data("position", Eigen::MatrixXd(tm.V));
   Eigen::VectorXi ids = Eigen::VectorXi::LinSpaced(tm.T.rows(), 0, static_cast<int>(tm.T.rows()) - 1);
   vtu.add_cell_data("id", ids);
-  const fs::path path = fs::temp_directory_path() / "igaprep_test_tets.vtu";
+  const fs::path path = temp_file("test_tets.vtu");
   igaprep::mesh::write_vtu(path.string(), vtu);
 
   const Eigen::Index p = tm.V.rows() / 2, c = tm.T.rows() - 1;
@@ -88,7 +97,7 @@ TEST(WriteVtu, TetMeshRoundTripThroughVtk) {
 
 TEST(WriteVtu, TrianglesFacesAndPolylines) {
   const auto sphere = igaprep::models::make_ellipsoid(1, 1, 1, 1);
-  const fs::path tri = fs::temp_directory_path() / "igaprep_test_tri.vtu";
+  const fs::path tri = temp_file("test_tri.vtu");
   igaprep::mesh::write_vtu(tri.string(), sphere);
   std::istringstream a(read_with_vtk(tri.string(), "print(g.GetCellType(0))\n"));
   long np = 0, nc = 0, type = 0;
@@ -101,7 +110,7 @@ TEST(WriteVtu, TrianglesFacesAndPolylines) {
   V << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1;
   auto lines = igaprep::mesh::vtu_polylines(V, {{0, 1, 2, 3}, {3, 4}});
   lines.add_cell_data("length", Eigen::VectorXd((Eigen::VectorXd(2) << 3.0, 1.0).finished()));
-  const fs::path pl = fs::temp_directory_path() / "igaprep_test_lines.vtu";
+  const fs::path pl = temp_file("test_lines.vtu");
   igaprep::mesh::write_vtu(pl.string(), lines);
   std::istringstream b(read_with_vtk(
       pl.string(), "print(g.GetCell(0).GetNumberOfPoints(), g.GetCellData().GetArray('length').GetValue(1))\n"));
@@ -120,7 +129,7 @@ TEST(WriteVtu, BadArraysAndPathsAreErrors) {
   const auto sphere = igaprep::models::make_ellipsoid(1, 1, 1, 1);
   auto vtu = igaprep::mesh::vtu_triangles(sphere);
   vtu.add_point_data("short", Eigen::VectorXd(Eigen::VectorXd::Zero(3)));
-  const fs::path path = fs::temp_directory_path() / "igaprep_test_bad.vtu";
+  const fs::path path = temp_file("test_bad.vtu");
   EXPECT_THROW(igaprep::mesh::write_vtu(path.string(), vtu), igaprep::Error);
   EXPECT_FALSE(fs::exists(path));
   EXPECT_THROW(igaprep::mesh::write_vtu("/nonexistent-dir/x.vtu", sphere), igaprep::Error);

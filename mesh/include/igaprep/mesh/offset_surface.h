@@ -18,9 +18,13 @@ struct OffsetOptions {
 // It is the zero set of (distance to `surface` - D) restricted to the inside,
 // meshed by CGAL Mesh_3 (restricted Delaunay, manifold criteria) from seeds
 // placed at depth D under the input vertices. Deterministic.
-// Throws bad_input when the offset surface is empty or has another genus or
-// number of components than `surface` (the solid is thinner than 2 D
-// somewhere); the message suggests a smaller D.
+// Throws bad_input when the offset vanishes somewhere (the solid is thinner
+// than 2 D there): the offset surface is empty, has another genus or number
+// of components than `surface`, or some input vertex is more than 4 D from
+// it (a thin part vanished without changing the topology). The message
+// suggests a smaller D (half the 5th percentile of the local thickness
+// measured by inward rays from the input vertices, or D / 2).
+// Uses and resets CGAL's default random generator (seed 0).
 TriMesh offset_inward(const TriMesh& surface, const OffsetOptions& options);
 
 }  // namespace igaprep::mesh

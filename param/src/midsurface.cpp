@@ -1,0 +1,232 @@
+#include "igaprep/param/midsurface.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <unordered_map>
+
+#include "igaprep/core/error.h"
+#include "igaprep/param/gradient.h"
+#include "igaprep/param/harmonic_field.h"
+#include "igaprep/param/sheet_topology.h"
+#include "igaprep/param/stiffness_matrix.h"
+#include "igaprep/param/tet_topology.h"
+#include "igaprep/param/trace_gradient.h"
+
+namespace igaprep::param {
+namespace {
+
+std::uint64_t key2(int a, int b) { return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b); }
+
+}  // namespace
+
+Eigen::VectorXd midsurface_field(const mesh::TetMesh& tets, const CutLoops& cut) {
+  const Eigen::Index n1 = cut.surface.V.rows();
+  if (tets.V.rows() < n1 || tets.V.topRows(n1) != cut.surface.V)
+    throw bad_input("midsurface: the tet mesh does not start with the vertices of the cut surface T1 "
+                    "(tetrahedralize the cut surface, not the original T1)");
+  std::vector<std::vector<int>> sets(3);
+  for (Eigen::Index i = 0; i < n1; ++i) {
+    const int s = cut.vertex_side(i);
+    sets[s > 0 ? 0 : (s < 0 ? 1 : 2)].push_back(static_cast<int>(i));
+  }
+  HarmonicSolver solver(tet_stiffness(tets.V, tets.T), sets);
+  return solver.solve({1.0, -1.0, 0.0});
+}
+
+Midsurface zero_sheet(const mesh::TetMesh& tets, const Eigen::VectorXd& f, Eigen::Index num_fixed, double snap) {
+  const Eigen::MatrixXd& V = tets.V;
+  const Eigen::MatrixXi& T = tets.T;
+  Midsurface out;
+  Eigen::VectorXd g = f;
+  // Snap free vertices that would give slivers (an edge cut within `snap` of them).
+  std::vector<char> to_zero(static_cast<std::size_t>(V.rows()), 0);
+  static const int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  for (Eigen::Index c = 0; c < T.rows(); ++c)
+    for (const auto& e : kEdges) {
+      const int a = T(c, e[0]), b = T(c, e[1]);
+      if (!(f(a) * f(b) < 0.0)) continue;
+      const double t = f(a) / (f(a) - f(b));
+      if (t < snap && a >= num_fixed) to_zero[a] = 1;
+      if (t > 1.0 - snap && b >= num_fixed) to_zero[b] = 1;
+    }
+  for (Eigen::Index i = num_fixed; i < V.rows(); ++i)
+    if (to_zero[i] || std::abs(g(i)) < 1e-14) {
+      if (g(i) != 0.0) ++out.snapped;
+      g(i) = 0.0;
+    }
+
+  std::unordered_map<std::uint64_t, int> vid;
+  std::vector<std::array<int, 2>> edges;
+  std::vector<double> ts;
+  auto vertex = [&](int a, int b) {  // a == b: the tet vertex itself (at 0)
+    if (a > b) std::swap(a, b);
+    const std::uint64_t k = key2(a, b);
+    auto it = vid.find(k);
+    if (it != vid.end()) return it->second;
+    const double t = a == b ? 0.0 : g(a) / (g(a) - g(b));
+    edges.push_back({a, b});
+    ts.push_back(t);
+    const int id = static_cast<int>(edges.size()) - 1;
+    vid[k] = id;
+    return id;
+  };
+  std::vector<std::array<int, 3>> tris;
+  std::vector<int> tri_tet;
+  auto emit = [&](int c, std::array<int, 3> tri, const Eigen::Vector3d& grad) {
+    auto pos = [&](int id) {
+      const auto& e = edges[static_cast<std::size_t>(id)];
+      return Eigen::Vector3d((1.0 - ts[id]) * V.row(e[0]) + ts[id] * V.row(e[1]));
+    };
+    const Eigen::Vector3d n = (pos(tri[1]) - pos(tri[0])).cross(pos(tri[2]) - pos(tri[0]));
+    if (n.dot(grad) < 0.0) std::swap(tri[1], tri[2]);
+    tris.push_back(tri);
+    tri_tet.push_back(c);
+  };
+  struct ZeroFace {
+    std::array<int, 3> v;
+    int tet;
+    int sign;
+  };
+  std::map<std::array<int, 3>, std::vector<ZeroFace>> zero_faces;
+  for (Eigen::Index ci = 0; ci < T.rows(); ++ci) {
+    const int c = static_cast<int>(ci);
+    std::vector<int> P, N, Z;
+    for (int k = 0; k < 4; ++k) {
+      const int v = T(c, k);
+      (g(v) > 0.0 ? P : (g(v) < 0.0 ? N : Z)).push_back(v);
+    }
+    if (Z.size() == 4) throw internal_error("midsurface: all four vertices of tet " + std::to_string(c) + " are at f = 0");
+    if (P.empty() && N.empty()) continue;
+    if ((P.empty() || N.empty()) && Z.size() != 3) continue;  // touches f = 0 in a vertex or an edge at most
+    Eigen::Matrix<double, 4, 3> gp;
+    tet_barycentric_gradients(V.row(T(c, 0)), V.row(T(c, 1)), V.row(T(c, 2)), V.row(T(c, 3)), gp);
+    Eigen::Vector3d grad = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 4; ++k) grad += g(T(c, k)) * gp.row(k).transpose();
+    if (Z.size() == 3) {
+      std::array<int, 3> key{Z[0], Z[1], Z[2]};
+      std::sort(key.begin(), key.end());
+      zero_faces[key].push_back({{Z[0], Z[1], Z[2]}, c, P.empty() ? -1 : 1});
+      continue;
+    }
+    if (Z.empty()) {
+      if (P.size() == 1 || N.size() == 1) {
+        const int lone = P.size() == 1 ? P[0] : N[0];
+        const std::vector<int>& rest = P.size() == 1 ? N : P;
+        emit(c, {vertex(lone, rest[0]), vertex(lone, rest[1]), vertex(lone, rest[2])}, grad);
+      } else {
+        const int q0 = vertex(N[0], P[0]), q1 = vertex(N[0], P[1]), q2 = vertex(N[1], P[1]), q3 = vertex(N[1], P[0]);
+        emit(c, {q0, q1, q2}, grad);
+        emit(c, {q0, q2, q3}, grad);
+      }
+    } else if (Z.size() == 1) {
+      const int z = vertex(Z[0], Z[0]);
+      if (P.size() == 2) emit(c, {z, vertex(N[0], P[0]), vertex(N[0], P[1])}, grad);
+      else emit(c, {z, vertex(P[0], N[0]), vertex(P[0], N[1])}, grad);
+    } else {  // two zeros, one +, one -
+      emit(c, {vertex(Z[0], Z[0]), vertex(Z[1], Z[1]), vertex(N[0], P[0])}, grad);
+    }
+  }
+  // A tet face at 0: part of the sheet when the tets on its two sides lie on opposite sides.
+  for (const auto& [key, list] : zero_faces) {
+    if (list.size() != 2 || list[0].sign == list[1].sign) continue;
+    const ZeroFace& lo = list[0].sign < 0 ? list[0] : list[1];
+    const int c = lo.tet;
+    Eigen::Matrix<double, 4, 3> gp;
+    tet_barycentric_gradients(V.row(T(c, 0)), V.row(T(c, 1)), V.row(T(c, 2)), V.row(T(c, 3)), gp);
+    Eigen::Vector3d grad = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 4; ++k) grad += g(T(c, k)) * gp.row(k).transpose();
+    emit(c, {vertex(lo.v[0], lo.v[0]), vertex(lo.v[1], lo.v[1]), vertex(lo.v[2], lo.v[2])}, grad);
+  }
+
+  const Eigen::Index nv = static_cast<Eigen::Index>(edges.size());
+  out.mesh.V.resize(nv, 3);
+  out.edge.resize(nv, 2);
+  out.t.resize(nv);
+  for (Eigen::Index i = 0; i < nv; ++i) {
+    const auto& e = edges[static_cast<std::size_t>(i)];
+    out.edge(i, 0) = e[0];
+    out.edge(i, 1) = e[1];
+    out.t(i) = ts[static_cast<std::size_t>(i)];
+    out.mesh.V.row(i) = e[0] == e[1] ? Eigen::RowVector3d(V.row(e[0])) : Eigen::RowVector3d((1.0 - out.t(i)) * V.row(e[0]) + out.t(i) * V.row(e[1]));
+  }
+  out.mesh.F.resize(static_cast<Eigen::Index>(tris.size()), 3);
+  out.tet.resize(static_cast<Eigen::Index>(tris.size()));
+  for (std::size_t i = 0; i < tris.size(); ++i) {
+    for (int k = 0; k < 3; ++k) out.mesh.F(static_cast<Eigen::Index>(i), k) = tris[i][k];
+    out.tet(static_cast<Eigen::Index>(i)) = tri_tet[i];
+  }
+  out.field = g;
+  return out;
+}
+
+Midsurface extract_midsurface(const mesh::TetMesh& tets, const CutLoops& cut, const Eigen::VectorXd& f, double snap) {
+  const Eigen::Index n1 = cut.surface.V.rows();
+  const int wanted = cut.genus + 1;
+  std::string problem;
+  for (double s : {snap, 0.0}) {
+    Midsurface m = zero_sheet(tets, f, n1, s);
+    const SheetTopology topo = analyze_sheet(m.mesh.F, m.mesh.V.rows());
+    problem = describe_sheet_problem(topo, wanted, "the midsurface M0");
+    if (problem.empty()) {
+      // Its boundary must be the cut loops: every boundary vertex a T1 vertex at 0.
+      for (const auto& loop : topo.boundary_loops)
+        for (int v : loop)
+          if (m.edge(v, 0) != m.edge(v, 1) || m.edge(v, 0) >= n1) {
+            problem = "the midsurface M0 has a boundary vertex (" + std::to_string(v) + ") off the cut loops";
+            break;
+          }
+    }
+    if (problem.empty()) {
+      m.boundary_loops = topo.boundary_loops;
+      return m;
+    }
+    if (s == 0.0) break;
+  }
+  throw bad_input(problem + " (cut: " + cut.source +
+                  "); the cut loops must bound one sheet through the solid: choose another plane or loops");
+}
+
+PathLengthStats midsurface_path_lengths(const mesh::TetMesh& tets, const Eigen::VectorXd& f, const CutLoops& cut) {
+  PathLengthStats st;
+  const TetTopology topo = build_tet_topology(tets.T, tets.V.rows());
+  GradientTracer tracer(tets.V, tets.T, topo, f);
+  TraceTarget target;
+  target.use_iso = true;
+  target.iso = 0.0;
+  std::vector<double> lengths;
+  for (Eigen::Index v = 0; v < cut.surface.V.rows(); ++v) {
+    const int s = cut.vertex_side(v);
+    if (s == 0) continue;
+    const int start = topo.vertex_cells_start[v];
+    if (start == topo.vertex_cells_start[v + 1]) continue;
+    const int c = topo.vertex_cells[start];
+    Eigen::Vector4d bary = Eigen::Vector4d::Zero();
+    for (int k = 0; k < 4; ++k)
+      if (tets.T(c, k) == v) bary(k) = 1.0;
+    TraceOptions opt;
+    opt.descend = s > 0;
+    opt.max_steps = 100000;
+    ++st.traced;
+    const TraceResult r = tracer.trace(c, bary, target, opt);
+    if (r.status != TraceStatus::Reached) continue;
+    double len = 0.0;
+    for (Eigen::Index i = 1; i < r.path.rows(); ++i) len += (r.path.row(i) - r.path.row(i - 1)).norm();
+    lengths.push_back(len);
+  }
+  st.reached = static_cast<int>(lengths.size());
+  if (lengths.empty()) return st;
+  double sum = 0.0;
+  for (double l : lengths) sum += l;
+  st.mean = sum / static_cast<double>(lengths.size());
+  double var = 0.0;
+  for (double l : lengths) var += (l - st.mean) * (l - st.mean);
+  st.variance = var / static_cast<double>(lengths.size());
+  st.min = *std::min_element(lengths.begin(), lengths.end());
+  st.max = *std::max_element(lengths.begin(), lengths.end());
+  return st;
+}
+
+}  // namespace igaprep::param

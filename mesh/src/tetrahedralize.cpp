@@ -9,6 +9,7 @@
 
 #include <CGAL/Polygon_mesh_processing/intersection.h>
 #include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
 #include <Eigen/Geometry>
@@ -96,6 +97,9 @@ TetMesh tetrahedralize(const std::vector<TriMesh>& surfaces, const std::vector<T
   meshes.reserve(all.size());
   for (std::size_t k = 0; k < all.size(); ++k) {
     meshes.push_back(detail::to_surface_mesh(*all[k], "tetrahedralize: " + surface_name(static_cast<int>(k))));
+  }
+  for (int k = 0; k < n; ++k) {
+    if (!CGAL::is_closed(meshes[k])) throw bad_input("tetrahedralize: " + surface_name(k) + " is not closed");
   }
   for (std::size_t i = 0; i < all.size(); ++i)
     for (std::size_t j = i + 1; j < all.size(); ++j)

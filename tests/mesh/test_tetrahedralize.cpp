@@ -198,6 +198,18 @@ TEST(Tetrahedralize, IntersectingSurfacesAreRefused) {
   }
 }
 
+TEST(Tetrahedralize, OpenShellIsRefused) {
+  TriMesh s = igaprep::models::make_ellipsoid(1, 1, 1, 2);
+  s.F.conservativeResize(s.F.rows() - 1, 3);
+  try {
+    igaprep::mesh::tetrahedralize({s});
+    FAIL() << "an open T1 was accepted";
+  } catch (const igaprep::Error& e) {
+    EXPECT_EQ(e.kind(), igaprep::ErrorKind::BadInput) << e.what();
+    EXPECT_NE(std::string(e.what()).find("surface T1 is not closed"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Tetrahedralize, TetgenFailureIsAnErrorNotACrash) {
   // One self-intersecting surface (a vertex pulled through the solid to the
   // other side): only TetGen sees it; its failure must come back as an error.

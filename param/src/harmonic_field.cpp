@@ -33,7 +33,7 @@ struct HarmonicSolver::Impl {
   std::unique_ptr<Eigen::CholmodSupernodalLLT<SpMat, Eigen::Lower>> chol;
 #endif
   std::unique_ptr<Eigen::SimplicialLDLT<SpMat, Eigen::Lower>> ldlt;
-  std::unique_ptr<Eigen::ConjugateGradient<SpMat, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>>>
+  std::unique_ptr<Eigen::ConjugateGradient<SpMat, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double, Eigen::Lower, Eigen::NaturalOrdering<int>>>>
       cg_ic;
   std::unique_ptr<Eigen::ConjugateGradient<SpMat, Eigen::Lower | Eigen::Upper>> cg_jacobi;
 
@@ -151,8 +151,8 @@ HarmonicSolver::HarmonicSolver(const SpMat& K, const std::vector<std::vector<int
   split_blocks(K, m.set_of, m.local, nf, nd, m.Kff, m.Kfd);
   check_components(m.Kff, m.Kfd, m.free);
 
-  m.kind = options.solver == LinearSolverKind::ConjugateGradient ? LinearSolverKind::ConjugateGradient
-                                                                  : LinearSolverKind::Cholesky;
+  m.kind = options.solver == LinearSolverKind::Cholesky ? LinearSolverKind::Cholesky
+                                                         : LinearSolverKind::ConjugateGradient;
   if (nf > 0) {
     if (m.kind == LinearSolverKind::Cholesky) {
 #ifdef IGAPREP_HAVE_CHOLMOD
@@ -172,7 +172,7 @@ HarmonicSolver::HarmonicSolver(const SpMat& K, const std::vector<std::vector<int
     } else {
       if (!options.cg_jacobi_only) {
         m.cg_ic = std::make_unique<
-            Eigen::ConjugateGradient<SpMat, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>>>();
+            Eigen::ConjugateGradient<SpMat, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double, Eigen::Lower, Eigen::NaturalOrdering<int>>>>();
         m.cg_ic->setTolerance(options.cg_tolerance);
         m.cg_ic->setMaxIterations(options.cg_max_iterations);
         m.cg_ic->compute(m.Kff);

@@ -107,6 +107,7 @@ TraceResult GradientTracer::run(int c, const Eigen::Vector4d& bary_in, const Tra
   clean<K>(b);
 
   std::vector<Eigen::Vector3d> path;
+  path.reserve(64);
   auto position = [&](int x, const VecK<K>& bx) {
     Eigen::Vector3d p = Eigen::Vector3d::Zero();
     for (int k = 0; k < K; ++k) p += bx(k) * detail::vrow(V_, C_(x, k));

@@ -70,11 +70,15 @@ TEST(Harmonic, CholeskyAndConjugateGradientAgree) {
   HarmonicSolverOptions cg;
   cg.solver = LinearSolverKind::ConjugateGradient;
   cg.cg_tolerance = 1e-13;
-  const Eigen::VectorXd u1 = shell_field(s), u2 = shell_field(s, cg);
+  HarmonicSolverOptions chol;
+  chol.solver = LinearSolverKind::Cholesky;
+  const Eigen::VectorXd u1 = shell_field(s, chol), u2 = shell_field(s, cg);
   EXPECT_LE((u1 - u2).cwiseAbs().maxCoeff(), 1e-9);
   HarmonicSolverOptions jacobi = cg;
   jacobi.cg_jacobi_only = true;
   EXPECT_LE((u1 - shell_field(s, jacobi)).cwiseAbs().maxCoeff(), 1e-9);
+  // The default (CG at its default tolerance) is close too.
+  EXPECT_LE((u1 - shell_field(s)).cwiseAbs().maxCoeff(), 1e-8);
 }
 
 TEST(Harmonic, FreeComponentWithoutDirichletIsSingular) {
@@ -107,7 +111,7 @@ TEST(Harmonic, FreeComponentWithoutDirichletIsSingular) {
   third.vertices = {static_cast<int>(nv)};
   third.value = 0.5;
   const Eigen::VectorXd u = harmonic_field(V, T, {left, right, third});
-  EXPECT_LE((u.tail(nv).array() - 0.5).abs().maxCoeff(), 1e-12);  // B is constant
+  EXPECT_LE((u.tail(nv).array() - 0.5).abs().maxCoeff(), 1e-9);  // B is constant (to the CG tolerance)
 }
 
 TEST(Harmonic, OverlappingSetsAndBadValuesAreBadInput) {
@@ -128,11 +132,14 @@ TEST(Harmonic, FactorizationReuseMatchesFreshSolve) {
   for (Eigen::Index i = 0; i < s.mesh.V.rows(); ++i)
     if (s.mesh.V(i, 2) > 1.2 && s.mesh.V.row(i).norm() < 1.99) cap.push_back(static_cast<int>(i));
   ASSERT_FALSE(cap.empty());
-  HarmonicSolver solver(K, {s.inner, s.outer, cap});
+  HarmonicSolverOptions chol;
+  chol.solver = LinearSolverKind::Cholesky;
+  HarmonicSolver solver(K, {s.inner, s.outer, cap}, chol);
+  EXPECT_EQ(solver.kind(), LinearSolverKind::Cholesky);
   EXPECT_EQ(solver.num_free() + s.inner.size() + s.outer.size() + cap.size(), static_cast<size_t>(s.mesh.V.rows()));
   const Eigen::VectorXd first = solver.solve({1.0, 0.0, 0.3});
   const Eigen::VectorXd second = solver.solve({-2.0, 5.0, 1.5});
-  const Eigen::VectorXd fresh = harmonic_field(K, {{s.inner, -2.0}, {s.outer, 5.0}, {cap, 1.5}});
+  const Eigen::VectorXd fresh = harmonic_field(K, {{s.inner, -2.0}, {s.outer, 5.0}, {cap, 1.5}}, chol);
   EXPECT_LE((second - fresh).cwiseAbs().maxCoeff(), 1e-12);
   EXPECT_GT((second - first).cwiseAbs().maxCoeff(), 1.0);  // really a different field
   // Linearity: the field for a combination of values is that combination.
@@ -143,6 +150,13 @@ TEST(Harmonic, FactorizationReuseMatchesFreshSolve) {
   const Eigen::VectorXd p = solver.solve_with(Eigen::VectorXd::Zero(s.mesh.V.rows()), f);
   const Eigen::VectorXd r = K * p;
   for (int v : solver.free_vertices()) ASSERT_NEAR(r(v), 1.0, 1e-9);
+  // The CG solver keeps its preconditioner: same answers to its tolerance.
+  HarmonicSolverOptions cg;
+  cg.solver = LinearSolverKind::ConjugateGradient;
+  cg.cg_tolerance = 1e-13;
+  HarmonicSolver iterative(K, {s.inner, s.outer, cap}, cg);
+  EXPECT_LE((iterative.solve({-2.0, 5.0, 1.5}) - fresh).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_GT(iterative.last_cg_iterations(), 0);
 }
 
 TEST(MaximumPrinciple, ShellFieldHasNoInteriorExtrema) {

@@ -12,9 +12,11 @@
 namespace igaprep::param {
 
 enum class LinearSolverKind {
-  Default,            // sparse Cholesky (see docs/harmonic-fields.md for the measurement behind it)
-  Cholesky,           // CHOLMOD supernodal LL^T when built with CHOLMOD, else Eigen's SimplicialLDLT
-  ConjugateGradient,  // CG with an incomplete-Cholesky preconditioner (Jacobi if that fails)
+  Default,            // = ConjugateGradient: measured fastest for one field on every mesh size tried
+                      // (docs/harmonic-fields.md); pick Cholesky for many fields on one mesh
+  Cholesky,           // CHOLMOD supernodal LL^T when built with CHOLMOD, else Eigen's SimplicialLDLT;
+                      // factor once, each further solve is two triangular solves
+  ConjugateGradient,  // CG with an incomplete-Cholesky preconditioner (natural ordering; Jacobi if it fails)
 };
 
 struct HarmonicSolverOptions {

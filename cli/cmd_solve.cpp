@@ -117,11 +117,11 @@ void add_solve_command(CLI::App& app) {
   sub->add_option("model", args->model, "Model file (HDF5, docs/hdf5-format.md)")->required()->check(CLI::ExistingFile);
   sub->add_option("-o,--output", args->output, "Result file: the refined model with displacement (HDF5)")->required();
   sub->add_option("--fix", args->fix, "Zero displacement on a labelled boundary: LABEL[:COMPONENTS], e.g. base:xyz, sym:x")
-      ->take_all();
+      ->allow_extra_args(false);
   sub->add_option("--pressure", args->pressure, "Pressure on a labelled boundary: LABEL=P (positive pushes in)")
-      ->take_all();
+      ->allow_extra_args(false);
   sub->add_option("--traction", args->traction, "Constant traction on a labelled boundary: LABEL=TX,TY,TZ")
-      ->take_all();
+      ->allow_extra_args(false);
   sub->add_option("--body-force", args->body_force, "Body force per volume: FX,FY,FZ");
   sub->add_option("--refine", args->refine, "Uniform h-refinement levels (each bisects every knot span)")
       ->check(CLI::Range(0, 10));

@@ -47,7 +47,7 @@ struct ElasticityOptions {
   // Gauss points per direction: degree + 1 + extra_quadrature.
   int extra_quadrature = 0;
   LinearSolver solver = LinearSolver::Cholesky;
-  double cg_tolerance = 1e-10;  // relative residual for LinearSolver::ConjugateGradient
+  double cg_tolerance = 1e-8;   // relative residual for LinearSolver::ConjugateGradient
   int cg_max_iterations = 0;    // 0: 10 * unknowns
 };
 

@@ -10,6 +10,8 @@ void add_offset_command(CLI::App& app);
 void add_model_command(CLI::App& app);
 void add_run_command(CLI::App& app);
 void add_export_command(CLI::App& app);
+void add_check_command(CLI::App& app);
+void add_solve_command(CLI::App& app);
 
 namespace {
 std::map<CLI::App*, CommandBody>& bodies() {
@@ -27,6 +29,8 @@ void register_commands(CLI::App& app) {
   add_tetmesh_command(app);
   add_model_command(app);
   add_export_command(app);
+  add_check_command(app);
+  add_solve_command(app);
 }
 
 int run_selected(CLI::App& app) {

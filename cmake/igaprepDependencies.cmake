@@ -5,6 +5,10 @@ include(CMakeFindDependencyMacro)
 
 find_dependency(Eigen3 3.3 NO_MODULE)
 find_dependency(CGAL)
+# FindHDF5 test-compiles a C program: a C++-only consumer needs C enabled.
+if(NOT CMAKE_C_COMPILER_LOADED)
+  enable_language(C)
+endif()
 find_dependency(HDF5 COMPONENTS C CXX)
 
 # TetGen (libtet1.5-dev): header tetgen.h, library libtet.so, needs TETLIBRARY.

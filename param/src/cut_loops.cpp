@@ -10,6 +10,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include <Eigen/Geometry>
 #include <Eigen/Eigenvalues>
 
 #include "igaprep/core/error.h"

@@ -5,7 +5,10 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <set>
 #include <unordered_map>
+
+#include <Eigen/Geometry>
 
 #include "igaprep/core/error.h"
 #include "igaprep/param/gradient.h"
@@ -21,6 +24,62 @@ namespace {
 std::uint64_t key2(int a, int b) { return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b); }
 
 }  // namespace
+
+int split_loop_chords(mesh::TetMesh& tets, const CutLoops& cut) {
+  const Eigen::Index n1 = cut.surface.V.rows();
+  std::vector<char> on_loop(static_cast<std::size_t>(n1), 0);
+  std::set<std::uint64_t> loop_edges;
+  for (const auto& loop : cut.loops)
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      on_loop[static_cast<std::size_t>(loop[i])] = 1;
+      const int a = loop[i], b = loop[(i + 1) % loop.size()];
+      loop_edges.insert(key2(std::min(a, b), std::max(a, b)));
+    }
+  static const int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  int total = 0;
+  for (int pass = 0; pass < 64; ++pass) {
+    std::map<std::uint64_t, int> mid;  // edge -> new vertex
+    std::vector<char> touched(static_cast<std::size_t>(tets.T.rows()), 0);
+    std::map<std::uint64_t, std::vector<int>> edge_tets;
+    for (Eigen::Index c = 0; c < tets.T.rows(); ++c)
+      for (const auto& e : kEdges) {
+        const int a = tets.T(c, e[0]), b = tets.T(c, e[1]);
+        if (a >= n1 || b >= n1 || !on_loop[a] || !on_loop[b]) continue;
+        const std::uint64_t k = key2(std::min(a, b), std::max(a, b));
+        if (!loop_edges.count(k)) edge_tets[k].push_back(static_cast<int>(c));
+      }
+    if (edge_tets.empty()) return total;
+    std::vector<std::array<int, 4>> extra;
+    std::vector<int> extra_material;
+    for (const auto& [k, cells] : edge_tets) {
+      bool free = true;
+      for (int c : cells) free = free && !touched[c];
+      if (!free) continue;
+      const int a = static_cast<int>(k >> 32), b = static_cast<int>(k & 0xffffffffu);
+      const int m = static_cast<int>(tets.V.rows());
+      tets.V.conservativeResize(m + 1, 3);
+      tets.V.row(m) = 0.5 * (tets.V.row(a) + tets.V.row(b));
+      for (int c : cells) {
+        touched[c] = 1;
+        std::array<int, 4> second{};
+        for (int j = 0; j < 4; ++j) second[j] = tets.T(c, j) == a ? m : tets.T(c, j);
+        for (int j = 0; j < 4; ++j)
+          if (tets.T(c, j) == b) tets.T(c, j) = m;
+        extra.push_back(second);
+        extra_material.push_back(tets.material(c));
+      }
+      ++total;
+    }
+    const Eigen::Index nt = tets.T.rows();
+    tets.T.conservativeResize(nt + static_cast<Eigen::Index>(extra.size()), 4);
+    tets.material.conservativeResize(nt + static_cast<Eigen::Index>(extra.size()));
+    for (std::size_t i = 0; i < extra.size(); ++i) {
+      for (int j = 0; j < 4; ++j) tets.T(nt + static_cast<Eigen::Index>(i), j) = extra[i][j];
+      tets.material(nt + static_cast<Eigen::Index>(i)) = extra_material[i];
+    }
+  }
+  throw internal_error("midsurface: splitting tet edges between loop vertices did not finish");
+}
 
 Eigen::VectorXd midsurface_field(const mesh::TetMesh& tets, const CutLoops& cut) {
   const Eigen::Index n1 = cut.surface.V.rows();

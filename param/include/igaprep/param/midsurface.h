@@ -18,6 +18,13 @@ namespace igaprep::param {
 // Throws bad_input when the tet mesh does not start with T1's vertices.
 Eigen::VectorXd midsurface_field(const mesh::TetMesh& tets, const CutLoops& cut);
 
+// Splits every tet edge that joins two loop vertices without being a loop edge
+// (such an edge lies inside the solid) at its midpoint, so that f = 0 holds on
+// no tet edge but the loop edges and M0 stays a manifold along its boundary.
+// New vertices are appended (T1's vertices keep their indices); returns the
+// number of edges split.
+int split_loop_chords(mesh::TetMesh& tets, const CutLoops& cut);
+
 struct Midsurface {
   mesh::TriMesh mesh;       // M0, triangles oriented towards increasing f (normal into R+'s side)
   Eigen::MatrixXi edge;     // #V x 2 tet vertices of the edge each vertex lies on (a, a for a tet vertex at f = 0)

@@ -36,8 +36,10 @@ struct PolycubeLoop {
   std::array<DomainSide, 4> sides{};  // side of segment k, from corner k to corner k + 1 (cyclically)
 };
 
-// Splits the interior edge of every "ear" (a triangle with two boundary
-// edges), whose three vertices would otherwise land on one straight side.
+// Splits every interior edge whose two ends are boundary vertices (the inner
+// edge of an "ear", a triangle with two boundary edges, or a chord across the
+// sheet) at its midpoint: such a triangle's three vertices could otherwise land
+// on one straight side of the domain (a zero-area image).
 // Inputs/outputs: the sheet; new vertices are appended (edge midpoints).
 // Returns the number of edges split.
 int split_boundary_ears(mesh::TriMesh& sheet);
@@ -56,6 +58,13 @@ std::vector<PolycubeLoop> automatic_corners(const mesh::TriMesh& sheet, const st
 // otherwise, or when two points snap to one vertex.
 std::vector<PolycubeLoop> corners_from_points(const mesh::TriMesh& sheet, const std::vector<std::vector<int>>& loops,
                                               const std::vector<Eigen::Vector3d>& points, const SheetFrame& frame);
+
+// A hole corner is a reflex (270 degree) corner of the domain: it needs at
+// least three triangles around it, or its fan cannot open without folding.
+// Splits the edges opposite the corner in its fan (interior edges only) until
+// every hole corner has at least min_fan triangles. Only interior vertices are
+// added (appended), so the loops stay valid. Returns the number of splits.
+int refine_hole_corners(mesh::TriMesh& sheet, const std::vector<PolycubeLoop>& loops, int min_fan = 4);
 
 struct RectilinearDomain {
   double width = 0.0, height = 0.0;   // the outer rectangle [0, width] x [0, height]
@@ -93,6 +102,14 @@ enum class UvWeights { Cotangent, MeanValue };
 Eigen::MatrixXd harmonic_uv(const mesh::TriMesh& sheet, const Eigen::MatrixXd& fixed_uv,
                             const std::vector<char>& fixed, UvWeights weights);
 
+// Local untangling: each free vertex of a triangle that is not positively
+// oriented is moved into the kernel of its one-ring (the points from which
+// every opposite ring edge is seen counter-clockwise), found by cyclic
+// projection onto those half-planes. A harmonic map can fold next to the
+// reflex (hole) corners of the domain, where no convex-combination theorem
+// holds. Returns the number of triangles still not positively oriented.
+int untangle_uv(const mesh::TriMesh& sheet, Eigen::MatrixXd& uv, const std::vector<char>& fixed, int rounds = 50);
+
 // Per triangle: signed (u, v) area / 3D area (> 0: positively oriented).
 Eigen::VectorXd uv_jacobians(const mesh::TriMesh& sheet, const Eigen::MatrixXd& uv);
 
@@ -113,12 +130,12 @@ struct Polycube2D {
   std::string weights;                   // "cotangent" or "mean value" (fallback)
 };
 
-// The whole step. Inputs: sheet (M0trim, after split_boundary_ears), its
-// boundary loops, corner points (empty: automatic). Output: the
-// parameterization; cotangent weights first and mean-value weights when some
+// The whole step. Inputs: sheet (M0trim, after split_boundary_ears; refined in
+// place at hole corners, see refine_hole_corners), its boundary loops, corner
+// points (empty: automatic). Output: the parameterization; cotangent weights first and mean-value weights when some
 // triangle is not positively oriented. Throws check_failed when neither gives
 // a bijective map (the message suggests other corners or cut loops).
-Polycube2D polycube_2d(const mesh::TriMesh& sheet, const std::vector<std::vector<int>>& loops,
+Polycube2D polycube_2d(mesh::TriMesh& sheet, const std::vector<std::vector<int>>& loops,
                        const std::vector<Eigen::Vector3d>& corner_points = {});
 
 }  // namespace igaprep::param

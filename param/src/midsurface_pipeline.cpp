@@ -1,0 +1,73 @@
+#include "igaprep/param/midsurface_pipeline.h"
+
+#include "igaprep/core/error.h"
+#include "igaprep/param/sheet_topology.h"
+
+namespace igaprep::param {
+namespace {
+
+// Tet mesh, field and M0 for one cut.
+void build_m0(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOptions& o, MidsurfaceResult& r) {
+  std::vector<mesh::TriMesh> shells = surfaces;
+  shells[0] = r.cut.surface;
+  r.tets = mesh::tetrahedralize(shells, {}, o.tetgen);
+  split_loop_chords(r.tets, r.cut);
+  r.f = midsurface_field(r.tets, r.cut);
+  r.m0 = extract_midsurface(r.tets, r.cut, r.f);
+  r.m0trim = trim_midsurface(r.tets, r.m0, static_cast<int>(surfaces.size()) - 1, r.cut.genus + 1);
+}
+
+}  // namespace
+
+MidsurfaceResult build_midsurface(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOptions& o,
+                                  const std::string& name) {
+  if (surfaces.empty()) throw bad_input("midsurface: no surfaces");
+  if (!(o.m0 > 0.0 && o.m0 < 1.0)) throw bad_input("midsurface: m0 must lie in (0, 1), got " + std::to_string(o.m0));
+  MidsurfaceResult r;
+  const mesh::TriMesh& T1 = surfaces[0];
+  if (o.cut == MidsurfaceOptions::CutKind::Automatic) {
+    bool ok = false;
+    for (const CutPlane& p : automatic_cut_planes(T1)) {
+      try {
+        r.cut = cut_by_plane(T1, p, name);
+        r.cut.source = "automatic: " + r.cut.source;
+        build_m0(surfaces, o, r);
+        ok = true;
+        break;
+      } catch (const Error& e) {
+        if (e.kind() != ErrorKind::BadInput) throw;
+        r.tried.push_back(e.what());
+      }
+    }
+    if (!ok) {
+      std::string all;
+      for (const auto& t : r.tried) all += "\n  " + t;
+      throw bad_input(name + ": no automatic cut plane gives a valid midsurface:" + all +
+                      "\ngive a plane or explicit loops in the case file's \"midsurface\" section");
+    }
+  } else {
+    r.cut = o.cut == MidsurfaceOptions::CutKind::Plane ? cut_by_plane(T1, o.plane, name) : cut_by_loops(T1, o.loops, name);
+    build_m0(surfaces, o, r);
+  }
+  if (o.path_lengths) r.paths = midsurface_path_lengths(r.tets, r.f, r.cut);
+
+  // Ears would put three vertices on one straight side of the domain.
+  const Eigen::Index before = r.m0trim.mesh.V.rows();
+  if (split_boundary_ears(r.m0trim.mesh) > 0) {
+    r.m0trim.m0_vertex.conservativeResize(r.m0trim.mesh.V.rows());
+    r.m0trim.m0_vertex.tail(r.m0trim.mesh.V.rows() - before).setConstant(-1);
+    r.m0trim.m0_face = Eigen::VectorXi::Constant(r.m0trim.mesh.F.rows(), -1);
+    r.m0trim.boundary_loops = analyze_sheet(r.m0trim.mesh.F, r.m0trim.mesh.V.rows()).boundary_loops;
+  }
+  r.polycube = polycube_2d(r.m0trim.mesh, r.m0trim.boundary_loops, o.corners);
+  if (r.m0trim.mesh.V.rows() > r.m0trim.m0_vertex.size()) {  // refined at hole corners
+    const Eigen::Index old = r.m0trim.m0_vertex.size();
+    r.m0trim.m0_vertex.conservativeResize(r.m0trim.mesh.V.rows());
+    r.m0trim.m0_vertex.tail(r.m0trim.mesh.V.rows() - old).setConstant(-1);
+    r.m0trim.m0_face = Eigen::VectorXi::Constant(r.m0trim.mesh.F.rows(), -1);
+  }
+  r.base = base_surface(r.m0trim.mesh, r.polycube, o.m0, r.cut.genus + 1);
+  return r;
+}
+
+}  // namespace igaprep::param

@@ -1,0 +1,704 @@
+#include "igaprep/param/polycube_2d.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <set>
+#include <unordered_map>
+
+#include <Eigen/Geometry>
+#include <Eigen/Eigenvalues>
+#include <Eigen/SparseLU>
+
+#include "igaprep/core/error.h"
+#include "igaprep/param/harmonic_field.h"
+#include "igaprep/param/stiffness_matrix.h"
+
+namespace igaprep::param {
+namespace {
+
+std::uint64_t ekey(int a, int b) {
+  return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint64_t>(std::max(a, b));
+}
+
+Eigen::Vector3d P(const mesh::TriMesh& m, int i) { return m.V.row(i).transpose(); }
+
+// Expected chord direction of each side when walking the loop (sheet on the left).
+Eigen::Vector2d side_direction(DomainSide s, bool outer) {
+  const double sg = outer ? 1.0 : -1.0;
+  switch (s) {
+    case DomainSide::Bottom: return {sg, 0.0};
+    case DomainSide::Right: return {0.0, sg};
+    case DomainSide::Top: return {-sg, 0.0};
+    case DomainSide::Left: return {0.0, -sg};
+  }
+  return {0.0, 0.0};
+}
+
+// Order of sides along a loop: outer B R T L (counter-clockwise), holes B L T R.
+std::array<DomainSide, 4> side_order(bool outer) {
+  if (outer) return {DomainSide::Bottom, DomainSide::Right, DomainSide::Top, DomainSide::Left};
+  return {DomainSide::Bottom, DomainSide::Left, DomainSide::Top, DomainSide::Right};
+}
+
+double signed_area(const mesh::TriMesh& m, const std::vector<int>& loop, const SheetFrame& fr) {
+  double a = 0.0;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const Eigen::Vector3d p = P(m, loop[i]) - fr.origin, q = P(m, loop[(i + 1) % loop.size()]) - fr.origin;
+    a += 0.5 * (p.dot(fr.e1) * q.dot(fr.e2) - q.dot(fr.e1) * p.dot(fr.e2));
+  }
+  return a;
+}
+
+std::vector<double> arc_lengths(const mesh::TriMesh& m, const std::vector<int>& loop) {
+  std::vector<double> s(loop.size() + 1, 0.0);
+  for (std::size_t i = 0; i < loop.size(); ++i) s[i + 1] = s[i] + (P(m, loop[(i + 1) % loop.size()]) - P(m, loop[i])).norm();
+  return s;
+}
+
+// Rotates the loop's sides so segment chords follow the expected directions best.
+void assign_sides(const mesh::TriMesh& m, PolycubeLoop& L, const SheetFrame& fr) {
+  std::array<Eigen::Vector2d, 4> chord;
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::Vector3d d = P(m, L.vertices[L.corners[(k + 1) % 4]]) - P(m, L.vertices[L.corners[k]]);
+    chord[k] = Eigen::Vector2d(d.dot(fr.e1), d.dot(fr.e2));
+  }
+  const auto order = side_order(L.outer);
+  int best = 0;
+  double best_score = -1e300;
+  for (int r = 0; r < 4; ++r) {
+    double score = 0.0;
+    for (int k = 0; k < 4; ++k) score += chord[k].dot(side_direction(order[(k + r) % 4], L.outer));
+    if (score > best_score) {
+      best_score = score;
+      best = r;
+    }
+  }
+  for (int k = 0; k < 4; ++k) L.sides[k] = order[(k + best) % 4];
+}
+
+std::vector<PolycubeLoop> make_loops(const mesh::TriMesh& m, const std::vector<std::vector<int>>& loops,
+                                     const SheetFrame& fr) {
+  if (loops.empty()) throw bad_input("polycube: the sheet has no boundary loop");
+  std::vector<PolycubeLoop> out(loops.size());
+  int outer = 0;
+  double best = -1e300;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    out[l].vertices = loops[l];
+    if (loops[l].size() < 4) throw bad_input("polycube: boundary loop " + std::to_string(l) + " has fewer than 4 vertices");
+    const double a = signed_area(m, loops[l], fr);
+    if (a > best) {
+      best = a;
+      outer = static_cast<int>(l);
+    }
+  }
+  out[static_cast<std::size_t>(outer)].outer = true;
+  return out;
+}
+
+// Corner positions valid: increasing, each segment at least `min_frac` of the loop and 2 edges.
+bool corners_ok(const std::vector<double>& s, std::array<int, 4> c, std::size_t n, double min_frac) {
+  const double total = s.back();
+  for (int k = 0; k < 4; ++k) {
+    const int a = c[k], b = c[(k + 1) % 4];
+    const int edges = (b - a + static_cast<int>(n)) % static_cast<int>(n);
+    const double len = k < 3 ? s[b] - s[a] : total - s[a] + s[b];
+    if (edges < 2 || len < min_frac * total) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+const char* to_string(DomainSide side) {
+  switch (side) {
+    case DomainSide::Bottom: return "bottom";
+    case DomainSide::Right: return "right";
+    case DomainSide::Top: return "top";
+    case DomainSide::Left: return "left";
+  }
+  return "?";
+}
+
+SheetFrame sheet_frame(const mesh::TriMesh& m) {
+  SheetFrame fr;
+  double area = 0.0;
+  Eigen::Vector3d c = Eigen::Vector3d::Zero(), n = Eigen::Vector3d::Zero();
+  for (int f = 0; f < m.F.rows(); ++f) {
+    const Eigen::Vector3d a = P(m, m.F(f, 0)), b = P(m, m.F(f, 1)), d = P(m, m.F(f, 2));
+    const Eigen::Vector3d cr = (b - a).cross(d - a);
+    area += 0.5 * cr.norm();
+    c += 0.5 * cr.norm() * (a + b + d) / 3.0;
+    n += cr;
+  }
+  if (!(area > 0.0) || !(n.norm() > 0.0)) throw bad_input("polycube: the sheet has no area");
+  c /= area;
+  n.normalize();
+  Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+  for (int f = 0; f < m.F.rows(); ++f) {
+    const Eigen::Vector3d a = P(m, m.F(f, 0)), b = P(m, m.F(f, 1)), d = P(m, m.F(f, 2));
+    const double A = 0.5 * (b - a).cross(d - a).norm();
+    for (const Eigen::Vector3d& x : {a, b, d}) C += (A / 3.0) * (x - c) * (x - c).transpose();
+  }
+  const Eigen::Matrix3d Pn = Eigen::Matrix3d::Identity() - n * n.transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(Pn * C * Pn);
+  Eigen::Vector3d e1 = Pn * eig.eigenvectors().col(2);
+  if (!(e1.norm() > 1e-12)) e1 = Pn * Eigen::Vector3d::UnitX();
+  if (!(e1.norm() > 1e-12)) e1 = Pn * Eigen::Vector3d::UnitY();
+  e1.normalize();
+  Eigen::Index i;
+  e1.cwiseAbs().maxCoeff(&i);
+  if (e1(i) < 0) e1 = -e1;  // deterministic sign
+  fr.origin = c;
+  fr.normal = n;
+  fr.e1 = e1;
+  fr.e2 = n.cross(e1).normalized();
+  return fr;
+}
+
+int split_boundary_ears(mesh::TriMesh& m) {
+  int total = 0;
+  for (int pass = 0; pass < 32; ++pass) {
+    std::unordered_map<std::uint64_t, std::vector<int>> ef;
+    for (int f = 0; f < m.F.rows(); ++f)
+      for (int k = 0; k < 3; ++k) ef[ekey(m.F(f, k), m.F(f, (k + 1) % 3))].push_back(f);
+    std::vector<char> touched(static_cast<std::size_t>(m.F.rows()), 0);
+    std::map<std::uint64_t, int> mid;
+    std::vector<Eigen::RowVector3d> newV;
+    std::vector<char> on_boundary(static_cast<std::size_t>(m.V.rows()), 0);
+    for (const auto& [key, fs] : ef)
+      if (fs.size() == 1) on_boundary[key >> 32] = on_boundary[key & 0xffffffffu] = 1;
+    std::vector<std::uint64_t> keys;
+    for (const auto& [key, fs] : ef) keys.push_back(key);
+    std::sort(keys.begin(), keys.end());
+    for (std::uint64_t key : keys) {
+      const auto& fs = ef[key];
+      const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
+      if (fs.size() != 2 || !on_boundary[a] || !on_boundary[b] || touched[fs[0]] || touched[fs[1]]) continue;
+      touched[fs[0]] = touched[fs[1]] = 1;
+      mid[key] = static_cast<int>(m.V.rows() + static_cast<Eigen::Index>(newV.size()));
+      newV.push_back(0.5 * (m.V.row(a) + m.V.row(b)));
+    }
+    if (newV.empty()) return total;
+    total += static_cast<int>(newV.size());
+    std::vector<std::array<int, 3>> faces;
+    for (int f = 0; f < m.F.rows(); ++f) {
+      bool split = false;
+      for (int k = 0; k < 3 && !split; ++k) {
+        const int a = m.F(f, k), b = m.F(f, (k + 1) % 3), c = m.F(f, (k + 2) % 3);
+        auto it = mid.find(ekey(a, b));
+        if (it == mid.end()) continue;
+        faces.push_back({a, it->second, c});
+        faces.push_back({it->second, b, c});
+        split = true;
+      }
+      if (!split) faces.push_back({m.F(f, 0), m.F(f, 1), m.F(f, 2)});
+    }
+    const Eigen::Index nv = m.V.rows();
+    m.V.conservativeResize(nv + static_cast<Eigen::Index>(newV.size()), 3);
+    for (std::size_t i = 0; i < newV.size(); ++i) m.V.row(nv + static_cast<Eigen::Index>(i)) = newV[i];
+    m.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      for (int k = 0; k < 3; ++k) m.F(static_cast<Eigen::Index>(f), k) = faces[f][k];
+  }
+  return total;
+}
+
+std::vector<PolycubeLoop> automatic_corners(const mesh::TriMesh& m, const std::vector<std::vector<int>>& loops,
+                                            const SheetFrame& fr) {
+  std::vector<PolycubeLoop> out = make_loops(m, loops, fr);
+  for (PolycubeLoop& L : out) {
+    const std::size_t n = L.vertices.size();
+    const std::vector<double> s = arc_lengths(m, L.vertices);
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (int v : L.vertices) c += P(m, v);
+    c /= static_cast<double>(n);
+    // The starts of the segments in loop order: outer BL, BR, TR, TL; holes BR, BL, TL, TR.
+    const std::array<Eigen::Vector2d, 4> dirs =
+        L.outer ? std::array<Eigen::Vector2d, 4>{Eigen::Vector2d(-1, -1), Eigen::Vector2d(1, -1), Eigen::Vector2d(1, 1),
+                                                 Eigen::Vector2d(-1, 1)}
+                : std::array<Eigen::Vector2d, 4>{Eigen::Vector2d(1, -1), Eigen::Vector2d(-1, -1), Eigen::Vector2d(-1, 1),
+                                                 Eigen::Vector2d(1, 1)};
+    std::array<int, 4> pos{};
+    for (int k = 0; k < 4; ++k) {
+      const Eigen::Vector3d d = dirs[k](0) * fr.e1 + dirs[k](1) * fr.e2;
+      double best = -1e300;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double x = d.dot(P(m, L.vertices[i]) - c);
+        if (x > best + 1e-12) {
+          best = x;
+          pos[k] = static_cast<int>(i);
+        }
+      }
+    }
+    // Rotate so that the first corner has the smallest position, then require increasing order.
+    const int first = static_cast<int>(std::min_element(pos.begin(), pos.end()) - pos.begin());
+    std::array<int, 4> rot{};
+    for (int k = 0; k < 4; ++k) rot[k] = pos[(first + k) % 4];
+    const bool increasing = rot[0] < rot[1] && rot[1] < rot[2] && rot[2] < rot[3];
+    if (increasing && corners_ok(s, rot, n, 0.05)) {
+      L.corners = rot;
+    } else {  // evenly by arc length from the first extreme point
+      const double total = s.back();
+      const double s0 = s[static_cast<std::size_t>(pos[0])];
+      std::array<int, 4> even{};
+      for (int k = 0; k < 4; ++k) {
+        const double target = std::fmod(s0 + k * total / 4.0, total);
+        std::size_t bi = 0;
+        double bd = 1e300;
+        for (std::size_t i = 0; i < n; ++i) {
+          const double d = std::min(std::abs(s[i] - target), total - std::abs(s[i] - target));
+          if (d < bd) {
+            bd = d;
+            bi = i;
+          }
+        }
+        even[k] = static_cast<int>(bi);
+      }
+      std::sort(even.begin(), even.end());
+      if (!corners_ok(s, even, n, 0.0))
+        throw bad_input("polycube: boundary loop with " + std::to_string(n) + " vertices is too short for four corners");
+      L.corners = even;
+    }
+    assign_sides(m, L, fr);
+  }
+  return out;
+}
+
+std::vector<PolycubeLoop> corners_from_points(const mesh::TriMesh& m, const std::vector<std::vector<int>>& loops,
+                                              const std::vector<Eigen::Vector3d>& points, const SheetFrame& fr) {
+  std::vector<PolycubeLoop> out = make_loops(m, loops, fr);
+  std::vector<std::vector<int>> picked(loops.size());
+  std::set<int> used;
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    double bd = 1e300;
+    int bl = -1, bi = -1;
+    for (std::size_t l = 0; l < loops.size(); ++l)
+      for (std::size_t i = 0; i < loops[l].size(); ++i) {
+        const double d = (P(m, loops[l][i]) - points[p]).squaredNorm();
+        if (d < bd) {
+          bd = d;
+          bl = static_cast<int>(l);
+          bi = static_cast<int>(i);
+        }
+      }
+    if (!used.insert(loops[bl][bi]).second)
+      throw bad_input("polycube: corner point " + std::to_string(p) + " snaps to the same boundary vertex as another");
+    picked[bl].push_back(bi);
+  }
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    if (picked[l].size() != 4)
+      throw bad_input("polycube: boundary loop " + std::to_string(l) + (out[l].outer ? " (outer)" : " (a hole)") +
+                      " got " + std::to_string(picked[l].size()) +
+                      " corner points; every loop needs exactly four (give four points near each loop, or none "
+                      "for automatic corners)");
+    std::sort(picked[l].begin(), picked[l].end());
+    for (int k = 0; k < 4; ++k) out[l].corners[k] = picked[l][k];
+    assign_sides(m, out[l], fr);
+  }
+  return out;
+}
+
+int refine_hole_corners(mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops, int min_fan) {
+  int total = 0;
+  for (int pass = 0; pass < 8; ++pass) {
+    std::unordered_map<std::uint64_t, std::vector<int>> ef;
+    for (int f = 0; f < m.F.rows(); ++f)
+      for (int k = 0; k < 3; ++k) ef[ekey(m.F(f, k), m.F(f, (k + 1) % 3))].push_back(f);
+    std::map<std::uint64_t, int> mid;
+    std::vector<Eigen::RowVector3d> newV;
+    for (const PolycubeLoop& L : loops) {
+      if (L.outer) continue;
+      for (int k = 0; k < 4; ++k) {
+        const int c = L.vertices[static_cast<std::size_t>(L.corners[k])];
+        std::vector<std::uint64_t> opposite;
+        int fan = 0;
+        for (int f = 0; f < m.F.rows(); ++f)
+          for (int j = 0; j < 3; ++j)
+            if (m.F(f, j) == c) {
+              ++fan;
+              opposite.push_back(ekey(m.F(f, (j + 1) % 3), m.F(f, (j + 2) % 3)));
+            }
+        if (fan >= min_fan) continue;
+        for (std::uint64_t e : opposite)
+          if (ef[e].size() == 2 && !mid.count(e)) {
+            mid[e] = static_cast<int>(m.V.rows() + static_cast<Eigen::Index>(newV.size()));
+            newV.push_back(0.5 * (m.V.row(static_cast<int>(e >> 32)) + m.V.row(static_cast<int>(e & 0xffffffffu))));
+          }
+      }
+    }
+    if (newV.empty()) return total;
+    total += static_cast<int>(newV.size());
+    // Split every face by the midpoints on its edges (1, 2 or 3 of them).
+    std::vector<std::array<int, 3>> faces;
+    for (int f = 0; f < m.F.rows(); ++f) {
+      std::array<int, 3> v{m.F(f, 0), m.F(f, 1), m.F(f, 2)}, e{};
+      int count = 0;
+      for (int j = 0; j < 3; ++j) {
+        auto it = mid.find(ekey(v[j], v[(j + 1) % 3]));
+        e[j] = it == mid.end() ? -1 : it->second;
+        count += e[j] >= 0;
+      }
+      if (count == 0) {
+        faces.push_back(v);
+      } else if (count == 3) {
+        faces.push_back({v[0], e[0], e[2]});
+        faces.push_back({e[0], v[1], e[1]});
+        faces.push_back({e[2], e[1], v[2]});
+        faces.push_back({e[0], e[1], e[2]});
+      } else if (count == 1) {
+        const int j = e[0] >= 0 ? 0 : (e[1] >= 0 ? 1 : 2);
+        faces.push_back({v[j], e[j], v[(j + 2) % 3]});
+        faces.push_back({e[j], v[(j + 1) % 3], v[(j + 2) % 3]});
+      } else {  // two: j is the edge without a midpoint
+        const int j = e[0] < 0 ? 0 : (e[1] < 0 ? 1 : 2);
+        const int a = v[j], b = v[(j + 1) % 3], c = v[(j + 2) % 3];
+        const int mbc = e[(j + 1) % 3], mca = e[(j + 2) % 3];
+        faces.push_back({a, b, mbc});
+        faces.push_back({a, mbc, mca});
+        faces.push_back({mca, mbc, c});
+      }
+    }
+    const Eigen::Index nv = m.V.rows();
+    m.V.conservativeResize(nv + static_cast<Eigen::Index>(newV.size()), 3);
+    for (std::size_t i = 0; i < newV.size(); ++i) m.V.row(nv + static_cast<Eigen::Index>(i)) = newV[i];
+    m.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      for (int k = 0; k < 3; ++k) m.F(static_cast<Eigen::Index>(f), k) = faces[f][k];
+  }
+  return total;
+}
+
+RectilinearDomain rectilinear_domain(const mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops) {
+  RectilinearDomain dom;
+  auto seg_length = [&](const PolycubeLoop& L, int k) {
+    const std::vector<double> s = arc_lengths(m, L.vertices);
+    const int a = L.corners[k], b = L.corners[(k + 1) % 4];
+    return k < 3 ? s[b] - s[a] : s.back() - s[a] + s[b];
+  };
+  auto sizes = [&](const PolycubeLoop& L) {
+    double w = 0.0, h = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      const bool horizontal = L.sides[k] == DomainSide::Bottom || L.sides[k] == DomainSide::Top;
+      (horizontal ? w : h) += 0.5 * seg_length(L, k);
+    }
+    return Eigen::Vector2d(w, h);
+  };
+  int outer = -1;
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    if (loops[l].outer) outer = static_cast<int>(l);
+  if (outer < 0) throw bad_input("polycube: no outer loop");
+  const Eigen::Vector2d WH = sizes(loops[outer]);
+  dom.width = WH(0);
+  dom.height = WH(1);
+  if (loops.size() == 1) return dom;
+
+  // Harmonic map with the outer loop on the rectangle and the holes free.
+  RectilinearDomain outer_only = dom;
+  std::vector<PolycubeLoop> just_outer{loops[outer]};
+  std::vector<char> fixed;
+  const Eigen::MatrixXd buv = boundary_uv(m, boundary_segments(just_outer, outer_only), fixed);
+  std::vector<int> fixed_list;
+  for (std::size_t i = 0; i < fixed.size(); ++i)
+    if (fixed[i]) fixed_list.push_back(static_cast<int>(i));
+  HarmonicSolver solver(tri_cotan_laplacian(m.V, m.F), {fixed_list});
+  Eigen::MatrixXd uv0(m.V.rows(), 2);
+  for (int c = 0; c < 2; ++c) uv0.col(c) = solver.solve_with(buv.col(c));
+
+  std::vector<Eigen::Vector2d> centers, hs;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    if (loops[l].outer) continue;
+    const auto& vs = loops[l].vertices;
+    Eigen::Vector2d c = Eigen::Vector2d::Zero();
+    double total = 0.0;
+    for (std::size_t i = 0; i < vs.size(); ++i) {
+      const int a = vs[i], b = vs[(i + 1) % vs.size()];
+      const double w = (P(m, b) - P(m, a)).norm();
+      c += w * 0.5 * (uv0.row(a) + uv0.row(b)).transpose();
+      total += w;
+    }
+    centers.push_back(c / total);
+    hs.push_back(sizes(loops[l]));
+    dom.hole_loop.push_back(static_cast<int>(l));
+  }
+  const double gap = 0.04 * std::min(dom.width, dom.height);
+  auto build = [&](double scale) {
+    std::vector<Eigen::Vector4d> holes;
+    for (std::size_t h = 0; h < centers.size(); ++h) {
+      const Eigen::Vector2d half = 0.5 * scale * hs[h];
+      Eigen::Vector2d c = centers[h];
+      c(0) = std::clamp(c(0), gap + half(0), dom.width - gap - half(0));
+      c(1) = std::clamp(c(1), gap + half(1), dom.height - gap - half(1));
+      holes.emplace_back(c(0) - half(0), c(1) - half(1), c(0) + half(0), c(1) + half(1));
+    }
+    return holes;
+  };
+  auto valid = [&](const std::vector<Eigen::Vector4d>& holes) {
+    for (std::size_t a = 0; a < holes.size(); ++a) {
+      const Eigen::Vector4d& h = holes[a];
+      if (h(0) < gap - 1e-12 || h(1) < gap - 1e-12 || h(2) > dom.width - gap + 1e-12 || h(3) > dom.height - gap + 1e-12 ||
+          !(h(2) > h(0)) || !(h(3) > h(1)))
+        return false;
+      for (std::size_t b = a + 1; b < holes.size(); ++b) {
+        const Eigen::Vector4d& g = holes[b];
+        const bool apart = h(2) + gap <= g(0) || g(2) + gap <= h(0) || h(3) + gap <= g(1) || g(3) + gap <= h(1);
+        if (!apart) return false;
+      }
+    }
+    return true;
+  };
+  double scale = 1.0;
+  std::vector<Eigen::Vector4d> holes = build(scale);
+  for (int it = 0; it < 200 && !valid(holes); ++it) holes = build(scale *= 0.95);
+  if (!valid(holes))
+    throw bad_input("polycube: the holes of M0trim do not fit as separate rectangles in the outer rectangle; "
+                    "give corner points in the case file");
+  // Align nearby sides of the same kind (e.g. holes in a row share their bottom and top).
+  std::vector<Eigen::Vector4d> aligned = holes;
+  const double tol = 0.05 * std::min(dom.width, dom.height);
+  for (int k = 0; k < 4; ++k)
+    for (std::size_t a = 0; a < aligned.size(); ++a) {
+      std::vector<std::size_t> group{a};
+      for (std::size_t b = 0; b < aligned.size(); ++b)
+        if (b != a && std::abs(holes[b](k) - holes[a](k)) < tol) group.push_back(b);
+      if (group.size() < 2) continue;
+      double mean = 0.0;
+      for (std::size_t g : group) mean += holes[g](k);
+      mean /= static_cast<double>(group.size());
+      for (std::size_t g : group) aligned[g](k) = mean;
+    }
+  dom.holes = valid(aligned) ? aligned : holes;
+  return dom;
+}
+
+std::vector<BoundarySegment> boundary_segments(const std::vector<PolycubeLoop>& loops, const RectilinearDomain& dom) {
+  std::vector<BoundarySegment> segs;
+  int hole = 0;
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    const PolycubeLoop& L = loops[l];
+    Eigen::Vector4d box(0.0, 0.0, dom.width, dom.height);
+    if (!L.outer) {
+      if (hole >= static_cast<int>(dom.holes.size())) throw bad_input("polycube: more inner loops than holes");
+      box = dom.holes[static_cast<std::size_t>(hole++)];
+    }
+    const std::size_t n = L.vertices.size();
+    for (int k = 0; k < 4; ++k) {
+      BoundarySegment s;
+      s.loop = static_cast<int>(l);
+      s.side = L.sides[k];
+      s.u_iso = s.side == DomainSide::Left || s.side == DomainSide::Right;
+      s.value = s.side == DomainSide::Left ? box(0) : s.side == DomainSide::Right ? box(2)
+              : s.side == DomainSide::Bottom ? box(1) : box(3);
+      for (std::size_t i = static_cast<std::size_t>(L.corners[k]);; i = (i + 1) % n) {
+        s.vertices.push_back(L.vertices[i]);
+        if (static_cast<int>(i) == L.corners[(k + 1) % 4] && s.vertices.size() > 1) break;
+      }
+      segs.push_back(s);
+    }
+  }
+  return segs;
+}
+
+Eigen::MatrixXd boundary_uv(const mesh::TriMesh& m, const std::vector<BoundarySegment>& segs, std::vector<char>& fixed) {
+  Eigen::MatrixXd uv = Eigen::MatrixXd::Zero(m.V.rows(), 2);
+  fixed.assign(static_cast<std::size_t>(m.V.rows()), 0);
+  // Corners: a corner is the end of one segment (iso in one coordinate) and the
+  // start of the next (iso in the other), so both values are known exactly.
+  for (std::size_t k = 0; k < segs.size(); ++k) {
+    const BoundarySegment& s = segs[k];
+    const BoundarySegment* prev = nullptr;
+    const BoundarySegment* next = nullptr;
+    for (const BoundarySegment& t : segs)
+      if (t.loop == s.loop) {
+        if (t.vertices.back() == s.vertices.front()) prev = &t;
+        if (t.vertices.front() == s.vertices.back()) next = &t;
+      }
+    if (!prev || !next || prev->u_iso == s.u_iso || next->u_iso == s.u_iso)
+      throw internal_error("polycube: segments of a loop do not alternate between u and v");
+    Eigen::Vector2d a, b;  // start and end corner
+    a(s.u_iso ? 0 : 1) = s.value;
+    a(prev->u_iso ? 0 : 1) = prev->value;
+    b(s.u_iso ? 0 : 1) = s.value;
+    b(next->u_iso ? 0 : 1) = next->value;
+    double total = 0.0;
+    for (std::size_t i = 1; i < s.vertices.size(); ++i) total += (P(m, s.vertices[i]) - P(m, s.vertices[i - 1])).norm();
+    double acc = 0.0;
+    for (std::size_t i = 0; i < s.vertices.size(); ++i) {
+      if (i > 0) acc += (P(m, s.vertices[i]) - P(m, s.vertices[i - 1])).norm();
+      const double t = i + 1 == s.vertices.size() ? 1.0 : (total > 0 ? acc / total : 0.0);
+      Eigen::Vector2d x = (1.0 - t) * a + t * b;
+      x(s.u_iso ? 0 : 1) = s.value;  // exactly iso-parametric
+      if (i == 0) x = a;
+      if (i + 1 == s.vertices.size()) x = b;
+      uv.row(s.vertices[i]) = x.transpose();
+      fixed[static_cast<std::size_t>(s.vertices[i])] = 1;
+    }
+  }
+  return uv;
+}
+
+Eigen::MatrixXd harmonic_uv(const mesh::TriMesh& m, const Eigen::MatrixXd& fixed_uv, const std::vector<char>& fixed,
+                            UvWeights weights) {
+  const Eigen::Index n = m.V.rows();
+  if (weights == UvWeights::Cotangent) {
+    std::vector<int> list;
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (fixed[static_cast<std::size_t>(i)]) list.push_back(static_cast<int>(i));
+    HarmonicSolver solver(tri_cotan_laplacian(m.V, m.F), {list});
+    Eigen::MatrixXd uv(n, 2);
+    for (int c = 0; c < 2; ++c) uv.col(c) = solver.solve_with(fixed_uv.col(c));
+    return uv;
+  }
+  // Floater's mean-value weights: w_ij = (tan(a/2) + tan(b/2)) / |x_j - x_i|,
+  // a and b the angles at x_i of the two triangles along edge ij. Positive,
+  // so the map is a convex combination map.
+  std::vector<Eigen::Triplet<double>> trip;
+  for (int f = 0; f < m.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int i = m.F(f, k), j = m.F(f, (k + 1) % 3), l = m.F(f, (k + 2) % 3);
+      if (fixed[static_cast<std::size_t>(i)]) continue;
+      const Eigen::Vector3d eij = P(m, j) - P(m, i), eil = P(m, l) - P(m, i);
+      const double angle = std::atan2(eij.cross(eil).norm(), eij.dot(eil));
+      const double t = std::tan(0.5 * angle);
+      // angle at i lies between edges ij and il: it contributes to both weights
+      trip.emplace_back(i, j, -t / eij.norm());
+      trip.emplace_back(i, l, -t / eil.norm());
+      trip.emplace_back(i, i, t / eij.norm() + t / eil.norm());
+    }
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (fixed[static_cast<std::size_t>(i)]) trip.emplace_back(static_cast<int>(i), static_cast<int>(i), 1.0);
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(trip.begin(), trip.end());
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(A);
+  if (lu.info() != Eigen::Success) throw internal_error("polycube: the mean-value system could not be factored");
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, 2);
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (fixed[static_cast<std::size_t>(i)]) rhs.row(i) = fixed_uv.row(i);
+  Eigen::MatrixXd uv = lu.solve(rhs);
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (fixed[static_cast<std::size_t>(i)]) uv.row(i) = fixed_uv.row(i);  // exact
+  return uv;
+}
+
+int untangle_uv(const mesh::TriMesh& m, Eigen::MatrixXd& uv, const std::vector<char>& fixed, int rounds) {
+  std::vector<std::vector<int>> vf(static_cast<std::size_t>(m.V.rows()));
+  for (int f = 0; f < m.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) vf[static_cast<std::size_t>(m.F(f, k))].push_back(f);
+  auto area = [&](int f) {
+    const int a = m.F(f, 0), b = m.F(f, 1), c = m.F(f, 2);
+    return (uv(b, 0) - uv(a, 0)) * (uv(c, 1) - uv(a, 1)) - (uv(c, 0) - uv(a, 0)) * (uv(b, 1) - uv(a, 1));
+  };
+  int folded = 0;
+  for (int round = 0; round <= rounds; ++round) {
+    std::set<int> movers;
+    folded = 0;
+    for (int f = 0; f < m.F.rows(); ++f)
+      if (!(area(f) > 0.0)) {
+        ++folded;
+        for (int k = 0; k < 3; ++k)
+          if (!fixed[static_cast<std::size_t>(m.F(f, k))]) movers.insert(m.F(f, k));
+      }
+    if (folded == 0 || round == rounds || movers.empty()) break;
+    for (int v : movers) {
+      // Half-planes: for face (v, a, b) in order, x must lie left of a -> b.
+      std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> hp;
+      double scale = 1e300;
+      for (int f : vf[static_cast<std::size_t>(v)]) {
+        int j = 0;
+        while (m.F(f, j) != v) ++j;
+        const Eigen::Vector2d a = uv.row(m.F(f, (j + 1) % 3)).transpose(), b = uv.row(m.F(f, (j + 2) % 3)).transpose();
+        hp.emplace_back(a, b);
+        scale = std::min(scale, (b - a).norm());
+      }
+      Eigen::Vector2d x = uv.row(v).transpose();
+      const double margin = 1e-3 * scale;
+      for (int it = 0; it < 200; ++it) {
+        bool ok = true;
+        for (const auto& [a, b] : hp) {
+          const Eigen::Vector2d d = b - a;
+          const Eigen::Vector2d n(-d(1), d(0));  // left normal
+          const double nn = n.norm();
+          if (!(nn > 0)) continue;
+          const double s = n.dot(x - a) / nn;
+          if (s < margin) {
+            ok = false;
+            x += (margin - s) * n / nn;
+          }
+        }
+        if (ok) break;
+      }
+      uv.row(v) = x.transpose();
+    }
+  }
+  return folded;
+}
+
+Eigen::VectorXd uv_jacobians(const mesh::TriMesh& m, const Eigen::MatrixXd& uv) {
+  Eigen::VectorXd J(m.F.rows());
+  for (int f = 0; f < m.F.rows(); ++f) {
+    const int a = m.F(f, 0), b = m.F(f, 1), c = m.F(f, 2);
+    const double uva = 0.5 * ((uv(b, 0) - uv(a, 0)) * (uv(c, 1) - uv(a, 1)) - (uv(c, 0) - uv(a, 0)) * (uv(b, 1) - uv(a, 1)));
+    const double A = 0.5 * (P(m, b) - P(m, a)).cross(P(m, c) - P(m, a)).norm();
+    J(f) = A > 0 ? uva / A : (uva > 0 ? 1e300 : -1e300);
+  }
+  return J;
+}
+
+std::vector<Eigen::Vector4d> domain_rectangles(const RectilinearDomain& dom) {
+  std::vector<double> xs{0.0, dom.width}, ys{0.0, dom.height};
+  for (const auto& h : dom.holes) {
+    xs.push_back(h(0));
+    xs.push_back(h(2));
+    ys.push_back(h(1));
+    ys.push_back(h(3));
+  }
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  std::sort(ys.begin(), ys.end());
+  ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
+  std::vector<Eigen::Vector4d> rects;
+  for (std::size_t j = 0; j + 1 < ys.size(); ++j)
+    for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
+      const double cx = 0.5 * (xs[i] + xs[i + 1]), cy = 0.5 * (ys[j] + ys[j + 1]);
+      bool in_hole = false;
+      for (const auto& h : dom.holes)
+        if (cx > h(0) && cx < h(2) && cy > h(1) && cy < h(3)) in_hole = true;
+      if (!in_hole) rects.emplace_back(xs[i], ys[j], xs[i + 1], ys[j + 1]);
+    }
+  return rects;
+}
+
+Polycube2D polycube_2d(mesh::TriMesh& sheet, const std::vector<std::vector<int>>& loops,
+                       const std::vector<Eigen::Vector3d>& corner_points) {
+  Polycube2D pc;
+  pc.frame = sheet_frame(sheet);
+  pc.loops = corner_points.empty() ? automatic_corners(sheet, loops, pc.frame)
+                                   : corners_from_points(sheet, loops, corner_points, pc.frame);
+  refine_hole_corners(sheet, pc.loops);
+  pc.domain = rectilinear_domain(sheet, pc.loops);
+  pc.segments = boundary_segments(pc.loops, pc.domain);
+  std::vector<char> fixed;
+  const Eigen::MatrixXd buv = boundary_uv(sheet, pc.segments, fixed);
+  for (UvWeights w : {UvWeights::Cotangent, UvWeights::MeanValue}) {
+    pc.uv = harmonic_uv(sheet, buv, fixed, w);
+    if (uv_jacobians(sheet, pc.uv).minCoeff() <= 0.0 && untangle_uv(sheet, pc.uv, fixed) == 0)
+      pc.weights = w == UvWeights::Cotangent ? "cotangent, untangled" : "mean value, untangled";
+    pc.jacobian = uv_jacobians(sheet, pc.uv);
+    pc.min_jacobian = pc.jacobian.minCoeff();
+    pc.max_jacobian = pc.jacobian.maxCoeff();
+    if (pc.weights.find("untangled") == std::string::npos) pc.weights = w == UvWeights::Cotangent ? "cotangent" : "mean value";
+    if (pc.min_jacobian > 0.0) break;
+  }
+  if (!(pc.min_jacobian > 0.0)) {
+    int flipped = 0;
+    for (Eigen::Index f = 0; f < pc.jacobian.size(); ++f) flipped += pc.jacobian(f) <= 0.0;
+    throw check_failed("polycube: the (u, v) map of M0trim folds (" + std::to_string(flipped) +
+                       " triangles not positively oriented, with cotangent and with mean-value weights); "
+                       "give corner points or other cut loops in the case file");
+  }
+  pc.rectangles = domain_rectangles(pc.domain);
+  return pc;
+}
+
+}  // namespace igaprep::param

@@ -1,0 +1,100 @@
+// The 2D polycube parameterization of M0trim (seed paper, section 4.2).
+#include <gtest/gtest.h>
+
+#include "igaprep/core/error.h"
+#include "igaprep/param/sheet_topology.h"
+#include "test_midsurface_cache.h"
+
+using namespace igaprep::param;
+using midsurface_test::cached;
+
+namespace {
+struct Variant {
+  std::string model, variant;
+  int genus;
+};
+void PrintTo(const Variant& v, std::ostream* os) { *os << v.model << "/" << v.variant; }
+class Polycube : public ::testing::TestWithParam<Variant> {};
+}  // namespace
+
+TEST_P(Polycube, BijectiveIsoParametricAndTiled) {
+  const auto& r = cached(GetParam().model, GetParam().variant).result;
+  const auto& S = r.m0trim.mesh;
+  const Polycube2D& pc = r.polycube;
+  const int g = GetParam().genus;
+  ASSERT_EQ(pc.uv.rows(), S.V.rows());
+  // Four corners and segments per loop, one outer loop.
+  ASSERT_EQ(static_cast<int>(pc.loops.size()), g + 1);
+  EXPECT_EQ(std::count_if(pc.loops.begin(), pc.loops.end(), [](const PolycubeLoop& l) { return l.outer; }), 1);
+  EXPECT_EQ(static_cast<int>(pc.segments.size()), 4 * (g + 1));
+  EXPECT_EQ(static_cast<int>(pc.domain.holes.size()), g);
+  // Every triangle positively oriented in (u, v), computed here from the coordinates.
+  double min_area = 1e300, total = 0.0;
+  for (int f = 0; f < S.F.rows(); ++f) {
+    const Eigen::Vector2d a = pc.uv.row(S.F(f, 0)), b = pc.uv.row(S.F(f, 1)), c = pc.uv.row(S.F(f, 2));
+    const double A = 0.5 * ((b - a)(0) * (c - a)(1) - (c - a)(0) * (b - a)(1));
+    min_area = std::min(min_area, A);
+    total += A;
+  }
+  EXPECT_GT(min_area, 0.0);
+  EXPECT_GT(pc.min_jacobian, 0.0);
+  // The image covers the domain: total area = W H - holes.
+  double domain_area = pc.domain.width * pc.domain.height;
+  for (const auto& h : pc.domain.holes) domain_area -= (h(2) - h(0)) * (h(3) - h(1));
+  EXPECT_NEAR(total, domain_area, 1e-9 * domain_area);
+  // Each boundary segment iso-parametric, the other coordinate monotone within the side.
+  for (const auto& s : pc.segments) {
+    const int c = s.u_iso ? 0 : 1;
+    for (int v : s.vertices) EXPECT_NEAR(pc.uv(v, c), s.value, 1e-12);
+    ASSERT_GE(s.vertices.size(), 2u);
+  }
+  // Rectangles tile the domain: inside it, outside every hole, no overlaps, areas add up.
+  double rect_area = 0.0;
+  for (std::size_t i = 0; i < pc.rectangles.size(); ++i) {
+    const Eigen::Vector4d& R = pc.rectangles[i];
+    EXPECT_GT(R(2), R(0));
+    EXPECT_GT(R(3), R(1));
+    EXPECT_GE(R(0), 0.0);
+    EXPECT_GE(R(1), 0.0);
+    EXPECT_LE(R(2), pc.domain.width);
+    EXPECT_LE(R(3), pc.domain.height);
+    rect_area += (R(2) - R(0)) * (R(3) - R(1));
+    for (const auto& h : pc.domain.holes)
+      EXPECT_TRUE(R(2) <= h(0) || R(0) >= h(2) || R(3) <= h(1) || R(1) >= h(3)) << "rectangle " << i << " in a hole";
+    for (std::size_t j = i + 1; j < pc.rectangles.size(); ++j) {
+      const Eigen::Vector4d& Q = pc.rectangles[j];
+      EXPECT_TRUE(R(2) <= Q(0) || Q(2) <= R(0) || R(3) <= Q(1) || Q(3) <= R(1)) << i << " overlaps " << j;
+    }
+  }
+  EXPECT_NEAR(rect_area, domain_area, 1e-12 * domain_area);
+  EXPECT_EQ(static_cast<int>(pc.rectangles.size()), g == 0 ? 1 : (g == 1 ? 8 : static_cast<int>(pc.rectangles.size())));
+  if (g == 3) EXPECT_GE(pc.rectangles.size(), 10u);  // 3 holes in a row: at least 3 x 3 + ... cells
+}
+
+INSTANTIATE_TEST_SUITE_P(Models, Polycube,
+                         ::testing::Values(Variant{"sphere2", "auto", 0}, Variant{"ring2", "auto", 1},
+                                           Variant{"torus3", "auto", 3}, Variant{"sphere2", "plane", 0},
+                                           Variant{"sphere2", "loops", 0}),
+                         [](const auto& info) { return info.param.model + "_" + info.param.variant; });
+
+TEST(PolycubeCorners, UserPointsSnapToTheNearestBoundaryVertex) {
+  const auto& r = cached("sphere2").result;
+  const auto& S = r.m0trim.mesh;
+  const auto& L = r.polycube.loops[0];
+  // The automatic corners, moved slightly off the sheet, give the same corners back.
+  std::vector<Eigen::Vector3d> points;
+  for (int k = 0; k < 4; ++k)
+    points.push_back(S.V.row(L.vertices[L.corners[k]]).transpose() + Eigen::Vector3d(0.0, 0.0, 1e-3));
+  const auto loops = corners_from_points(S, {L.vertices}, points, r.polycube.frame);
+  ASSERT_EQ(loops.size(), 1u);
+  EXPECT_EQ(loops[0].corners, L.corners);
+  EXPECT_EQ(loops[0].sides, L.sides);
+  // Three points for a loop is refused.
+  points.pop_back();
+  try {
+    corners_from_points(S, {L.vertices}, points, r.polycube.frame);
+    FAIL();
+  } catch (const igaprep::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("got 3 corner points"), std::string::npos) << e.what();
+  }
+}

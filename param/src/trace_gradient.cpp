@@ -47,7 +47,7 @@ struct Step {
   bool ok = false;
   double s = 0.0;  // segment parameter: end = start + s * d
   int exit = -1;   // local facet left at the end
-  VecK<K> db;      // d(bary)/ds
+  VecK<K> db = VecK<K>::Zero();  // d(bary)/ds
   double length = 0.0;
 };
 
@@ -235,9 +235,9 @@ TraceResult GradientTracer::run(int c, const Eigen::Vector4d& bary_in, const Tra
       collect_star(c, b);
       int best = -1;
       double best_len = 0.0, best_cos = -1.0;
-      VecK<K> best_b;
+      VecK<K> best_b = VecK<K>::Zero();
       Step<K> best_st;
-      Eigen::Vector3d best_d;
+      Eigen::Vector3d best_d = Eigen::Vector3d::Zero();
       GradPhi<K> gy;
       for (int pass = 0; pass < 4 && best < 0; ++pass) {
         for (int y : star) {

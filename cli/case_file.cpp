@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 
+#include "case_midsurface.h"
 #include "igaprep/core/error.h"
 
 namespace igaprep::cli {
@@ -155,6 +156,8 @@ CaseFile read_case_file(const std::string& path) {
       tr.fail("'tetmesh.radius_edge_ratio' must be 0 (off) or at least 1.0 (TetGen needs > 1.0 to terminate)");
     if (c.tetmesh.max_volume < 0.0) tr.fail("'tetmesh.max_volume' must be 0 (none) or positive");
   }
+  if (const json* m = r.find("midsurface")) c.midsurface = parse_midsurface_options(*m, path);
+  c.midsurface.tetgen = c.tetmesh;
   r.refuse_unknown();
   return c;
 }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "igaprep/mesh/tetrahedralize.h"
+#include "igaprep/param/midsurface_pipeline.h"
 
 namespace igaprep::cli {
 
@@ -29,6 +30,7 @@ struct CaseFile {
   std::vector<CaseMaterial> materials;  // one per surface: material i lies inside T(i+1)
   std::string output_dir;  // resolved against the case file's folder
   mesh::TetgenOptions tetmesh;
+  param::MidsurfaceOptions midsurface;  // section "midsurface" (docs/midsurface.md)
 };
 
 // Reads and validates a case file. Unknown keys, wrong types, missing files

@@ -97,17 +97,4 @@ param::MidsurfaceOptions parse_midsurface_options(const json& section, const std
   return o;
 }
 
-param::MidsurfaceOptions read_midsurface_options(const std::string& case_path) {
-  std::ifstream in(case_path);
-  if (!in) throw bad_input(case_path + ": cannot open the case file");
-  json j;
-  try {
-    in >> j;
-  } catch (const json::exception& e) {
-    throw bad_input(case_path + ": not valid JSON (" + e.what() + ")");
-  }
-  if (!j.is_object() || !j.contains("midsurface")) return {};
-  return parse_midsurface_options(j["midsurface"], case_path);
-}
-
 }  // namespace igaprep::cli

@@ -19,7 +19,5 @@ namespace igaprep::cli {
 // wrong type or a value out of range.
 param::MidsurfaceOptions parse_midsurface_options(const nlohmann::json& section, const std::string& file);
 
-// Reads `case_path` and parses its "midsurface" section (defaults when absent).
-param::MidsurfaceOptions read_midsurface_options(const std::string& case_path);
 
 }  // namespace igaprep::cli

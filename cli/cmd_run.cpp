@@ -1,6 +1,7 @@
 // igaprep run [CASE.json] [-o OUTDIR]: the main job on a case (the default
 // model ring2 when no case is given). Today's stages: validate the surfaces
-// and their nesting, then tetrahedralize; later stages join as they land.
+// and their nesting, tetrahedralize, midsurface and base surface; the
+// decomposition, fit, check and export stages join as they land.
 #include <cstdio>
 #include <filesystem>
 
@@ -8,6 +9,7 @@
 #include "case_surfaces.h"
 #include "commands.h"
 #include "igaprep/models/builtin_models.h"
+#include "stage_midsurface.h"
 #include "stage_tetmesh.h"
 #include "stage_timer.h"
 
@@ -33,6 +35,7 @@ void add_run_command(CLI::App& app) {
     std::fflush(stdout);
 
     run_tetmesh_stage(c, surfaces, (std::filesystem::path(dir) / "tetmesh.vtu").string());
+    run_midsurface_stage(c, surfaces, dir);
     return 0;
   });
 }

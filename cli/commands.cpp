@@ -12,6 +12,7 @@ void add_run_command(CLI::App& app);
 void add_export_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_solve_command(CLI::App& app);
+void add_midsurface_command(CLI::App& app);
 
 namespace {
 std::map<CLI::App*, CommandBody>& bodies() {
@@ -27,6 +28,7 @@ void register_commands(CLI::App& app) {
   add_check_mesh_command(app);
   add_offset_command(app);
   add_tetmesh_command(app);
+  add_midsurface_command(app);
   add_model_command(app);
   add_export_command(app);
   add_check_command(app);

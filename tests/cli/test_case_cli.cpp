@@ -124,3 +124,28 @@ TEST(CaseCli, UnknownCommandIsAUsageError) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CaseCli, MidsurfaceSectionIsParsedAndItsUnknownKeysNamed) {
+  const auto dir = scratch_dir("midsurface_keys");
+  const auto path = write_case(dir, "{" + surfaces_key() + R"(, "midsurface": {"m0": 0.4, "colour": 1}})");
+  const auto r = run_cli("midsurface " + path);
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("colour"), std::string::npos) << r.out;
+}
+
+TEST(CaseCli, MidsurfaceOfRing2PrintsTwoLoopsAndWritesVtu) {
+  const auto dir = scratch_dir("midsurface_ring2");
+  const auto r = run_cli("midsurface " + models_dir() + "/ring2/case.json -o " + dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("genus 1"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("loop 1:"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("loop 2:"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("with 1 holes"), std::string::npos) << r.out;
+  for (const char* f : {"midsurface_t1_regions.vtu", "midsurface_loops.vtu", "midsurface_m0.vtu",
+                        "midsurface_m0trim.vtu", "midsurface_rectangles.vtu", "midsurface_base.vtu"})
+    EXPECT_TRUE(fs::exists(dir + "/" + f)) << f;
+}
+
+}  // namespace

@@ -1,29 +1,28 @@
 // The genus-3 built-in solid: a smooth tube around a planar frame with three
-// holes, meshed with CGAL's (Delaunay-refinement) surface mesher.
-#include <CGAL/Complex_2_in_triangulation_3.h>
-#include <CGAL/IO/facets_in_complex_2_to_triangle_mesh.h>
-#include <CGAL/Implicit_surface_3.h>
-#include <CGAL/Random.h>
+// holes. Its implicit function is contoured by marching tetrahedra on a Kuhn
+// grid, then remeshed isotropically with CGAL. (CGAL's Delaunay surface
+// mesher was the first choice, but its refinement queue is ordered by memory
+// addresses, so its output changed from one call to the next in one process.)
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <Eigen/Geometry>
+#include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/Surface_mesh_default_triangulation_3.h>
-#include <CGAL/make_surface_mesh.h>
-#include <CGAL/Polygon_mesh_processing/orientation.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
 
+#include "igaprep/mesh/marching_tets.h"
 #include "igaprep/models/shapes.h"
 
 namespace igaprep::models {
 
 namespace {
 
-using Tr = CGAL::Surface_mesh_default_triangulation_3;
-using C2t3 = CGAL::Complex_2_in_triangulation_3<Tr>;
-using GT = Tr::Geom_traits;
-using Point3 = GT::Point_3;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point3 = Kernel::Point_3;
+using SurfaceMesh = CGAL::Surface_mesh<Point3>;
 
 struct Segment2 {
   double ax, ay, bx, by;
@@ -50,36 +49,72 @@ double smooth_min(double a, double b, double k) {
   return std::min(a, b) - h * h * k * 0.25;
 }
 
-struct FrameFunction {
-  std::vector<Segment2> segments;
-  double radius;
-  GT::FT operator()(const Point3& p) const {
-    double d = distance_to_segment(p.x(), p.y(), p.z(), segments[0]);
-    for (std::size_t i = 1; i < segments.size(); ++i)
-      d = smooth_min(d, distance_to_segment(p.x(), p.y(), p.z(), segments[i]), 0.15);
-    return d - radius;
-  }
-};
+// Negative inside the solid.
+double frame_function(const std::vector<Segment2>& segments, double radius, double x, double y, double z) {
+  double d = distance_to_segment(x, y, z, segments[0]);
+  for (std::size_t i = 1; i < segments.size(); ++i) d = smooth_min(d, distance_to_segment(x, y, z, segments[i]), 0.15);
+  return d - radius;
+}
+
+// Kuhn (Freudenthal) subdivision of a regular grid: 6 tets per cube, all
+// positively oriented, conforming across cubes.
+void kuhn_grid(const Eigen::Vector3d& lo, const Eigen::Vector3i& cells, double h, Eigen::MatrixXd& V,
+               Eigen::MatrixXi& T) {
+  const int nx = cells.x() + 1, ny = cells.y() + 1, nz = cells.z() + 1;
+  V.resize(static_cast<Eigen::Index>(nx) * ny * nz, 3);
+  auto id = [&](int i, int j, int k) { return i + nx * (j + ny * k); };
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) V.row(id(i, j, k)) = (lo + h * Eigen::Vector3d(i, j, k)).transpose();
+  // The six paths from corner 000 to 111 through the cube's vertices.
+  static const int kPaths[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  T.resize(6 * static_cast<Eigen::Index>(cells.prod()), 4);
+  Eigen::Index t = 0;
+  for (int k = 0; k < cells.z(); ++k)
+    for (int j = 0; j < cells.y(); ++j)
+      for (int i = 0; i < cells.x(); ++i)
+        for (const auto& path : kPaths) {
+          std::array<int, 3> c{{i, j, k}};
+          std::array<int, 4> tet;
+          tet[0] = id(c[0], c[1], c[2]);
+          for (int s = 0; s < 3; ++s) {
+            c[static_cast<std::size_t>(path[s])] += 1;
+            tet[static_cast<std::size_t>(s) + 1] = id(c[0], c[1], c[2]);
+          }
+          const Eigen::Vector3d a = V.row(tet[0]), b = V.row(tet[1]), cc = V.row(tet[2]), d = V.row(tet[3]);
+          if ((b - a).cross(cc - a).dot(d - a) < 0) std::swap(tet[2], tet[3]);
+          T.row(t++) << tet[0], tet[1], tet[2], tet[3];
+        }
+}
 
 }  // namespace
 
 mesh::TriMesh make_three_hole_frame(double tube_radius, double edge_length) {
-  // The surface mesher draws its initial points from CGAL's default random
-  // generator, seeded from the clock: fix it so the model is deterministic.
-  CGAL::get_default_random() = CGAL::Random(0);
-  Tr triangulation;
-  C2t3 complex(triangulation);
-  const FrameFunction function{frame_segments(), tube_radius};
-  // Bounding sphere centred inside the solid (on the right bar).
-  const GT::Sphere_3 bounds(Point3(0.5, 0.0, 0.0), 2.5 * 2.5);
-  CGAL::Implicit_surface_3<GT, FrameFunction> surface(function, bounds, 1e-7);
-  const CGAL::Surface_mesh_default_criteria_3<Tr> criteria(30.0, edge_length, 0.05 * edge_length);
-  CGAL::make_surface_mesh(complex, surface, criteria, CGAL::Manifold_tag());
+  const std::vector<Segment2> segments = frame_segments();
+  // A grid at half the target edge length around the frame (with margin).
+  const double h = 0.5 * edge_length;
+  const Eigen::Vector3d lo(-1.5 - tube_radius - 2 * h, -0.6 - tube_radius - 2 * h, -tube_radius - 2 * h);
+  const Eigen::Vector3d hi = -lo;
+  const Eigen::Vector3i cells = ((hi - lo) / h).array().ceil().cast<int>();
+  Eigen::MatrixXd V;
+  Eigen::MatrixXi T;
+  kuhn_grid(lo, cells, h, V, T);
+  Eigen::VectorXd field(V.rows());
+  for (Eigen::Index i = 0; i < V.rows(); ++i) field(i) = frame_function(segments, tube_radius, V(i, 0), V(i, 1), V(i, 2));
+  const mesh::IsoSurface iso = mesh::marching_tets(V, T, field, 0.0);
 
-  CGAL::Surface_mesh<Point3> sm;
-  CGAL::facets_in_complex_2_to_triangle_mesh(complex, sm);
-  if (!CGAL::Polygon_mesh_processing::is_outward_oriented(sm))
-    CGAL::Polygon_mesh_processing::reverse_face_orientations(sm);
+  // Remesh to well-shaped triangles of the target size; Surface_mesh works on
+  // indices, so the result depends only on the input.
+  SurfaceMesh sm;
+  std::vector<SurfaceMesh::Vertex_index> vertex(static_cast<std::size_t>(iso.mesh.V.rows()));
+  for (Eigen::Index i = 0; i < iso.mesh.V.rows(); ++i)
+    vertex[static_cast<std::size_t>(i)] = sm.add_vertex(Point3(iso.mesh.V(i, 0), iso.mesh.V(i, 1), iso.mesh.V(i, 2)));
+  for (Eigen::Index f = 0; f < iso.mesh.F.rows(); ++f)
+    sm.add_face(vertex[static_cast<std::size_t>(iso.mesh.F(f, 0))], vertex[static_cast<std::size_t>(iso.mesh.F(f, 1))],
+                vertex[static_cast<std::size_t>(iso.mesh.F(f, 2))]);
+  CGAL::Polygon_mesh_processing::isotropic_remeshing(faces(sm), edge_length, sm,
+                                                     CGAL::parameters::number_of_iterations(5));
+  sm.collect_garbage();
 
   mesh::TriMesh m;
   m.V.resize(static_cast<Eigen::Index>(sm.number_of_vertices()), 3);

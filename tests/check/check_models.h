@@ -12,6 +12,7 @@
 #include "igaprep/mesh/tri_mesh.h"
 #include "igaprep/spline/multipatch.h"
 #include "igaprep/spline/refine.h"
+#include "igaprep/models/shapes.h"
 
 namespace check_test {
 
@@ -127,41 +128,6 @@ inline igaprep::spline::MultiPatch sphere_shell(double r0, double r1) {
 
 // Icosphere of radius r: the icosahedron subdivided `level` times, vertices on
 // the sphere, faces outward.
-inline igaprep::mesh::TriMesh icosphere(double r, int level) {
-  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Eigen::Vector3d> V = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                                    {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-  std::vector<std::array<int, 3>> F = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11},
-                                       {1, 5, 9}, {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                       {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8}, {3, 8, 9},
-                                       {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
-  for (auto& v : V) v.normalize();
-  for (int l = 0; l < level; ++l) {
-    std::map<std::pair<int, int>, int> mid;
-    auto midpoint = [&](int a, int b) {
-      const auto key = std::minmax(a, b);
-      auto it = mid.find(key);
-      if (it != mid.end()) return it->second;
-      V.push_back((V[a] + V[b]).normalized());
-      mid[key] = static_cast<int>(V.size()) - 1;
-      return static_cast<int>(V.size()) - 1;
-    };
-    std::vector<std::array<int, 3>> G;
-    for (const auto& f : F) {
-      const int a = midpoint(f[0], f[1]), b = midpoint(f[1], f[2]), c = midpoint(f[2], f[0]);
-      G.push_back({f[0], a, c});
-      G.push_back({f[1], b, a});
-      G.push_back({f[2], c, b});
-      G.push_back({a, b, c});
-    }
-    F = G;
-  }
-  igaprep::mesh::TriMesh m;
-  m.V.resize(V.size(), 3);
-  for (size_t i = 0; i < V.size(); ++i) m.V.row(i) = r * V[i].transpose();
-  m.F.resize(F.size(), 3);
-  for (size_t i = 0; i < F.size(); ++i) m.F.row(i) << F[i][0], F[i][1], F[i][2];
-  return m;
-}
+inline igaprep::mesh::TriMesh icosphere(double r, int level) { return igaprep::models::make_ellipsoid(r, r, r, level); }
 
 }  // namespace check_test

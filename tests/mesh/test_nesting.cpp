@@ -9,6 +9,7 @@
 #include "igaprep/core/error.h"
 #include "igaprep/mesh/check_surface.h"
 #include "igaprep/mesh/nesting.h"
+#include "igaprep/models/shapes.h"
 
 using igaprep::mesh::check_nesting;
 using igaprep::mesh::NestingReport;
@@ -18,35 +19,8 @@ namespace {
 
 // Icosahedron subdivided `levels` times, projected to the sphere.
 TriMesh icosphere(double radius, const Eigen::Vector3d& centre, int levels) {
-  const double g = (1 + std::sqrt(5.0)) / 2;
-  std::vector<Eigen::Vector3d> V = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-                                    {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
-  for (auto& v : V) v.normalize();
-  std::vector<Eigen::Vector3i> F = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                                    {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                    {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                                    {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-  for (int l = 0; l < levels; ++l) {
-    std::map<std::pair<int, int>, int> mid;
-    auto midpoint = [&](int a, int b) {
-      const auto key = std::minmax(a, b);
-      auto it = mid.find(key);
-      if (it != mid.end()) return it->second;
-      V.push_back((V[a] + V[b]).normalized());
-      return mid[key] = static_cast<int>(V.size()) - 1;
-    };
-    std::vector<Eigen::Vector3i> G;
-    for (const auto& f : F) {
-      const int ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]), ca = midpoint(f[2], f[0]);
-      G.insert(G.end(), {{f[0], ab, ca}, {ab, f[1], bc}, {ca, bc, f[2]}, {ab, bc, ca}});
-    }
-    F = G;
-  }
-  TriMesh m;
-  m.V.resize(V.size(), 3);
-  for (size_t i = 0; i < V.size(); ++i) m.V.row(i) = (radius * V[i] + centre).transpose();
-  m.F.resize(F.size(), 3);
-  for (size_t f = 0; f < F.size(); ++f) m.F.row(f) = F[f].transpose();
+  TriMesh m = igaprep::models::make_ellipsoid(radius, radius, radius, levels);
+  m.V.rowwise() += centre.transpose();
   return m;
 }
 

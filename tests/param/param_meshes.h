@@ -12,6 +12,7 @@
 
 #include "igaprep/mesh/tet_mesh.h"
 #include "igaprep/mesh/tri_mesh.h"
+#include "igaprep/models/shapes.h"
 
 namespace param_test {
 
@@ -109,41 +110,7 @@ inline igaprep::mesh::TriMesh square_tris(int n, double jitter = 0.0, unsigned s
 
 // Unit icosphere: icosahedron subdivided `level` times, vertices projected
 // onto the sphere, triangles counter-clockwise seen from outside.
-inline igaprep::mesh::TriMesh icosphere(int level) {
-  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Eigen::Vector3d> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                                    {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-  for (auto& p : v) p.normalize();
-  std::vector<std::array<int, 3>> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                                       {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                       {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                                       {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-  for (int l = 0; l < level; ++l) {
-    std::map<std::pair<int, int>, int> mid;
-    auto midpoint = [&](int a, int b) {
-      const auto key = std::minmax(a, b);
-      auto it = mid.find(key);
-      if (it != mid.end()) return it->second;
-      v.push_back((v[a] + v[b]).normalized());
-      return mid[key] = static_cast<int>(v.size()) - 1;
-    };
-    std::vector<std::array<int, 3>> g;
-    for (const auto& tri : f) {
-      const int a = midpoint(tri[0], tri[1]), b = midpoint(tri[1], tri[2]), c = midpoint(tri[2], tri[0]);
-      g.push_back({tri[0], a, c});
-      g.push_back({tri[1], b, a});
-      g.push_back({tri[2], c, b});
-      g.push_back({a, b, c});
-    }
-    f.swap(g);
-  }
-  igaprep::mesh::TriMesh m;
-  m.V.resize(static_cast<Eigen::Index>(v.size()), 3);
-  for (size_t i = 0; i < v.size(); ++i) m.V.row(static_cast<Eigen::Index>(i)) = v[i].transpose();
-  m.F.resize(static_cast<Eigen::Index>(f.size()), 3);
-  for (size_t i = 0; i < f.size(); ++i) m.F.row(static_cast<Eigen::Index>(i)) << f[i][0], f[i][1], f[i][2];
-  return m;
-}
+inline igaprep::mesh::TriMesh icosphere(int level) { return igaprep::models::make_ellipsoid(1.0, 1.0, 1.0, level); }
 
 // Spherical shell a < r < b: `layers` prism layers over an icosphere of the
 // given level, each prism split into 3 tets by the global vertex order (so

@@ -14,7 +14,8 @@ mesh::TriMesh make_torus(double major_radius, double minor_radius, int n_major, 
 
 // A genus-3 solid: the smooth tube of radius `tube_radius` around a planar
 // frame with three holes in a row (an outer rounded rectangle and two bars),
-// meshed by CGAL's surface mesher with triangles of about `edge_length`.
+// contoured by marching tets and remeshed (CGAL) to triangles of about
+// `edge_length`.
 mesh::TriMesh make_three_hole_frame(double tube_radius, double edge_length);
 
 }  // namespace igaprep::models

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "decomposition_cache.h"
+#include "igaprep/core/error.h"
 
 using namespace igaprep::param;
 
@@ -75,8 +76,64 @@ TEST_P(DecompositionMeshTest, EveryTriangleOfMIsAMarkedTetFace) {
     vmin = std::min(vmin, (b - a).dot((d - a).cross(e - a)));
   }
   EXPECT_GT(vmin, 0.0);
-  std::printf("%s: H has %ld vertices, %ld tets; M has %ld triangles, all marked tet faces\n", GetParam().c_str(),
-              static_cast<long>(H.tets.V.rows()), static_cast<long>(H.tets.T.rows()), static_cast<long>(M.F.rows()));
+  EXPECT_EQ(H.flat_tets, count_flat_tets(H.tets.T, vertex_surfaces(H)));
+  EXPECT_EQ(H.chords_split, 0);
+  std::printf("%s: H has %ld vertices, %ld tets (%d flat: all four vertices on one surface); M has %ld triangles, "
+              "all marked tet faces\n",
+              GetParam().c_str(), static_cast<long>(H.tets.V.rows()), static_cast<long>(H.tets.T.rows()), H.flat_tets,
+              static_cast<long>(M.F.rows()));
+}
+
+// Splitting the surface chords: same volume per material, positive tets, the
+// marked faces still tet faces, and no tet left with all vertices on one surface.
+TEST_P(DecompositionMeshTest, SplittingChordsRemovesFlatTets) {
+  const auto& c = decomposition_test::cached(GetParam(), false);
+  DecompositionMesh H = c.H;
+  std::vector<int> label = vertex_surfaces(H);
+  const int flat_before = count_flat_tets(H.tets.T, label);
+  auto volumes = [](const igaprep::mesh::TetMesh& m, double& vmin) {
+    Eigen::Vector2d v = Eigen::Vector2d::Zero();
+    vmin = 1e300;
+    for (Eigen::Index t = 0; t < m.T.rows(); ++t) {
+      const Eigen::Vector3d a = m.V.row(m.T(t, 0)), b = m.V.row(m.T(t, 1)), d = m.V.row(m.T(t, 2)), e = m.V.row(m.T(t, 3));
+      const double vol = (b - a).dot((d - a).cross(e - a)) / 6.0;
+      vmin = std::min(vmin, vol);
+      v(m.material(t)) += vol;
+    }
+    return v;
+  };
+  double vmin0, vmin1;
+  const Eigen::Vector2d before = volumes(H.tets, vmin0);
+  const int split = split_surface_chords(H.tets, label, surface_edges(H));
+  const Eigen::Vector2d after = volumes(H.tets, vmin1);
+  std::printf("%s: %d flat tets, %d chords split, %d flat tets left; smallest tet volume %.3g -> %.3g\n",
+              GetParam().c_str(), flat_before, split, count_flat_tets(H.tets.T, label), vmin0, vmin1);
+  EXPECT_GT(split, 0);
+  EXPECT_EQ(count_flat_tets(H.tets.T, label), 0);
+  EXPECT_EQ(static_cast<Eigen::Index>(label.size()), H.tets.V.rows());
+  EXPECT_EQ(H.tets.V.rows(), c.H.tets.V.rows() + split);
+  EXPECT_GT(vmin1, 0.0);
+  EXPECT_LT((after - before).norm(), 1e-12 * before.norm());
+  EXPECT_TRUE(faces_not_in_tets(H.tets.T, H.tets.F).empty());
+}
+
+TEST(DecompositionMesh, BaseSurfaceCrossingT2IsBadInput) {
+  const auto& mid = midsurface_test::cached("sphere2");
+  igaprep::mesh::TriMesh big = mid.result.base.mesh;
+  const Eigen::RowVector3d centre = big.V.colwise().mean();
+  big.V = ((big.V.rowwise() - centre) * 2.5).rowwise() + centre;  // reaches out through T2
+  int outside = 0;
+  for (Eigen::Index i = 0; i < big.V.rows(); ++i)
+    outside += midsurface_test::winding_number(big.V.row(i).transpose(), mid.model.surfaces[1]) < 0.5;
+  ASSERT_GT(outside, 0);  // some vertex outside T2 indeed
+  try {
+    decomposition_mesh(mid.model.surfaces, big);
+    FAIL() << "no error";
+  } catch (const igaprep::Error& e) {
+    EXPECT_EQ(e.kind(), igaprep::ErrorKind::BadInput);
+    EXPECT_NE(std::string(e.what()).find("embedded surface 0"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(decomposition_mesh(mid.model.surfaces, igaprep::mesh::TriMesh{}), igaprep::Error);
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, DecompositionMeshTest, ::testing::Values("sphere2", "ring2"),

@@ -84,7 +84,12 @@ BoundaryTraces trace_boundaries(const DecompositionMesh& H, const WField& w, con
   };
   auto record = [&](BoundaryTrace& bt) {
     bt.trace = resume(std::move(bt.trace));
-    bt.w = path_field_values(tracer, T, w.w, bt.trace.path);
+    // The end is known exactly (cell and barycentric coordinates); a point on
+    // T1 could fail the point location by round-off.
+    const Eigen::Index np = bt.trace.path.rows();
+    bt.w.resize(np);
+    if (np > 1) bt.w.head(np - 1) = path_field_values(tracer, T, w.w, bt.trace.path.topRows(np - 1));
+    bt.w(np - 1) = bt.trace.value;
     bt.max_rise = 0.0;
     for (Eigen::Index i = 0; i + 1 < bt.w.size(); ++i) bt.max_rise = std::max(bt.max_rise, bt.w(i + 1) - bt.w(i));
     ++out.total;
@@ -110,7 +115,8 @@ BoundaryTraces trace_boundaries(const DecompositionMesh& H, const WField& w, con
     BoundaryTrace bt;
     bt.vertex = m_vertex;
     Eigen::Vector4d b;
-    const int c = tracer.locate(p, -1, &b);
+    const int hv = decomposition_vertex(H, n, m_vertex);
+    const int c = tracer.locate(p, topo.vertex_cells[static_cast<std::size_t>(topo.vertex_cells_start[hv])], &b);
     if (c < 0) throw internal_error("trace_boundaries: side start point next to M vertex " + std::to_string(m_vertex) +
                                     " lies in no tet (offset too large?)");
     bt.trace = tracer.trace(c, b, target, topt);

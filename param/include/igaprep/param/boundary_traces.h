@@ -30,7 +30,7 @@ struct BoundaryTraceOptions {
 struct BoundaryTrace {
   int vertex = -1;       // M vertex the trace starts from (or next to, for side traces)
   TraceResult trace;     // ends on a face of T1 when trace.status == Reached
-  Eigen::VectorXd w;     // w at every point of trace.path (path_field_values)
+  Eigen::VectorXd w;     // w at every point of trace.path (path_field_values; the last is trace.value)
   double max_rise = 0.0;  // largest increase of w from one path point to the next (0: monotone)
 };
 

@@ -152,8 +152,8 @@ CaseFile read_case_file(const std::string& path) {
     c.tetmesh.radius_edge_ratio = tr.number("radius_edge_ratio", c.tetmesh.radius_edge_ratio);
     c.tetmesh.max_volume = tr.number("max_volume", c.tetmesh.max_volume);
     tr.refuse_unknown();
-    if (c.tetmesh.radius_edge_ratio != 0.0 && c.tetmesh.radius_edge_ratio < 1.0)
-      tr.fail("'tetmesh.radius_edge_ratio' must be 0 (off) or at least 1.0 (TetGen needs > 1.0 to terminate)");
+    if (c.tetmesh.radius_edge_ratio != 0.0 && !(c.tetmesh.radius_edge_ratio > 1.0))
+      tr.fail("'tetmesh.radius_edge_ratio' must be 0 (off) or greater than 1.0 (TetGen's refinement needs > 1.0 to end)");
     if (c.tetmesh.max_volume < 0.0) tr.fail("'tetmesh.max_volume' must be 0 (none) or positive");
   }
   if (const json* m = r.find("midsurface")) c.midsurface = parse_midsurface_options(*m, path);

@@ -16,7 +16,12 @@ CaseSurfaces load_case_surfaces(const CaseFile& c) {
     if (s.offset_of) {
       mesh::OffsetOptions options;
       options.distance = s.inward;
-      m = mesh::offset_inward(out.meshes.at(static_cast<std::size_t>(*s.offset_of)), options);
+      try {
+        m = mesh::offset_inward(out.meshes.at(static_cast<std::size_t>(*s.offset_of)), options);
+      } catch (const Error& e) {
+        throw Error(e.kind(), c.path + ": surface '" + s.label + "' (offset of " +
+                                  c.surfaces.at(static_cast<std::size_t>(*s.offset_of)).label + "): " + e.what());
+      }
       name = s.label + " (offset of " + out.names.at(static_cast<std::size_t>(*s.offset_of)) + " by " +
              std::to_string(s.inward) + ")";
     } else {

@@ -13,8 +13,20 @@ namespace igaprep::cli {
 
 namespace {
 
+// A file that could not be read has no counts or flags: null, not zeros.
+nlohmann::json unreadable_json(const std::string& file) {
+  nlohmann::json j;
+  for (const char* key : {"vertices", "faces", "components", "genus", "closed", "manifold", "oriented",
+                          "self_intersections", "volume", "bbox"})
+    j[key] = nullptr;
+  j["file"] = file;
+  j["readable"] = false;
+  j["warnings"] = nlohmann::json::array();
+  return j;
+}
+
 nlohmann::json report_json(const mesh::SurfaceReport& r) {
-  return {{"file", r.file},
+  return {{"readable", true},{"file", r.file},
           {"vertices", r.vertices},
           {"faces", r.faces},
           {"components", r.components},
@@ -37,6 +49,7 @@ int check_mesh(const std::vector<std::string>& files, bool as_json) {
   bool all_readable_and_valid = true;
   for (const std::string& file : files) {
     mesh::SurfaceReport report;
+    bool readable = true;
     try {
       mesh::TriMesh m = mesh::read_surface(file);
       report = mesh::check_surface(m, file);
@@ -45,13 +58,16 @@ int check_mesh(const std::vector<std::string>& files, bool as_json) {
     } catch (const Error& e) {
       report.file = file;
       report.errors.push_back(e.what());
+      readable = false;
     }
     if (!report.ok()) all_readable_and_valid = false;
     errors.insert(errors.end(), report.errors.begin(), report.errors.end());
     if (as_json) {
-      surfaces.push_back(report_json(report));
-    } else {
+      surfaces.push_back(readable ? report_json(report) : unreadable_json(file));
+    } else if (readable) {
       std::cout << mesh::format_report(report) << "\n";
+    } else {
+      std::cout << "surface: " << file << "\nunreadable\n\n";
     }
   }
   // Nesting is decided only when every surface is valid and there are two or more.

@@ -27,7 +27,12 @@ void add_offset_command(CLI::App& app) {
     mesh::TriMesh surface = mesh::load_checked_surface(args->input);
     mesh::OffsetOptions options;
     options.distance = args->inward;
-    mesh::TriMesh inner = mesh::offset_inward(surface, options);
+    mesh::TriMesh inner;
+    try {
+      inner = mesh::offset_inward(surface, options);
+    } catch (const Error& e) {
+      throw Error(e.kind(), args->input + ": " + e.what());  // name the file at fault
+    }
     mesh::SurfaceReport report = mesh::check_surface(inner, args->output);
     if (!report.ok()) throw internal_error("the offset surface is defective: " + report.errors.front());
     mesh::write_surface(args->output, inner);

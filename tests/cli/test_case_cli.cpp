@@ -149,3 +149,23 @@ TEST(CaseCli, MidsurfaceOfRing2PrintsTwoLoopsAndWritesVtu) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CaseCli, RadiusEdgeRatioOfOneIsRefused) {
+  const auto dir = scratch_dir("radius_edge");
+  const auto path = write_case(dir, "{" + surfaces_key() + R"(, "tetmesh": {"radius_edge_ratio": 1.0}})");
+  const auto r = run_cli("tetmesh " + path);
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("greater than 1.0"), std::string::npos) << r.out;
+}
+
+TEST(CaseCli, OffsetTooDeepNamesTheInputFile) {
+  const auto r = run_cli("offset " + models_dir() + "/ring2/inner.off --inward 0.3 -o " + std::string(IGAPREP_BINARY_DIR) +
+                         "/tests/cli_scratch/too_deep.off");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("ring2/inner.off: "), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(std::string(IGAPREP_BINARY_DIR) + "/tests/cli_scratch/too_deep.off"));
+}
+
+}  // namespace

@@ -66,3 +66,20 @@ TEST(CheckMeshCli, TableNamesTheFileAndTheVerdict) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CheckMeshCli, UnreadableFileHasNullFieldsNotZeros) {
+  const auto r = run_cli("check-mesh --json /nonexistent/none.stl " + models_dir() + "/torus3/outer.off");
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  const auto j = json_of(r);
+  ASSERT_EQ(j["surfaces"].size(), 2u);
+  EXPECT_EQ(j["surfaces"][0]["readable"], false);
+  for (const char* key : {"vertices", "faces", "components", "genus", "volume", "bbox", "closed"})
+    EXPECT_TRUE(j["surfaces"][0][key].is_null()) << key;
+  EXPECT_EQ(j["surfaces"][1]["readable"], true);
+  EXPECT_EQ(j["surfaces"][1]["genus"], 3);
+  EXPECT_TRUE(j["nested"].is_null());
+}
+
+}  // namespace

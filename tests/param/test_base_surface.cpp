@@ -10,10 +10,10 @@ using midsurface_test::cached;
 
 namespace {
 struct Variant {
-  std::string model;
+  std::string model, variant;
   int genus;
 };
-void PrintTo(const Variant& v, std::ostream* os) { *os << v.model; }
+void PrintTo(const Variant& v, std::ostream* os) { *os << v.model << "/" << v.variant; }
 class Base : public ::testing::TestWithParam<Variant> {};
 
 double area(const igaprep::mesh::TriMesh& m) {
@@ -27,7 +27,7 @@ double area(const igaprep::mesh::TriMesh& m) {
 }  // namespace
 
 TEST_P(Base, SingleSheetStrictlyInsideWithCornersOnItsBoundary) {
-  const auto& c = cached(GetParam().model);
+  const auto& c = cached(GetParam().model, GetParam().variant);
   const auto& r = c.result;
   const BaseSurface& M = r.base;
   const int g = GetParam().genus;
@@ -62,7 +62,7 @@ TEST_P(Base, SingleSheetStrictlyInsideWithCornersOnItsBoundary) {
 }
 
 TEST_P(Base, LargerM0GivesSmallerM) {
-  const auto& r = cached(GetParam().model).result;
+  const auto& r = cached(GetParam().model, GetParam().variant).result;
   const auto& S = r.m0trim.mesh;
   const double a3 = area(r.base.mesh);
   const BaseSurface M5 = base_surface(S, r.polycube, 0.5, GetParam().genus + 1);
@@ -76,8 +76,12 @@ TEST_P(Base, LargerM0GivesSmallerM) {
   EXPECT_LE(M5.b.maxCoeff(), 1.05);
 }
 
-INSTANTIATE_TEST_SUITE_P(Models, Base, ::testing::Values(Variant{"sphere2", 0}, Variant{"ring2", 1}, Variant{"torus3", 3}),
-                         [](const auto& info) { return info.param.model; });
+// Automatic cuts on every genus, and sphere2 cut by a plane and by explicit loops.
+INSTANTIATE_TEST_SUITE_P(Models, Base,
+                         ::testing::Values(Variant{"sphere2", "auto", 0}, Variant{"ring2", "auto", 1},
+                                           Variant{"torus3", "auto", 3}, Variant{"sphere2", "plane", 0},
+                                           Variant{"sphere2", "loops", 0}),
+                         [](const auto& info) { return info.param.model + "_" + info.param.variant; });
 
 TEST(BaseSurfaceRefusal, M0OutsideTheOpenInterval) {
   const auto& r = cached("sphere2").result;

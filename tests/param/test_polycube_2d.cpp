@@ -1,4 +1,7 @@
 // The 2D polycube parameterization of M0trim (seed paper, section 4.2).
+#include <algorithm>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "igaprep/core/error.h"
@@ -38,6 +41,23 @@ TEST_P(Polycube, BijectiveIsoParametricAndTiled) {
   }
   EXPECT_GT(min_area, 0.0);
   EXPECT_GT(pc.min_jacobian, 0.0);
+  // Bijective with a margin: no near-fold. Jacobian = (u, v) area / 3D area,
+  // computed here; the smallest must stay above 1e-4 of the median.
+  std::vector<double> jac;
+  for (int f = 0; f < S.F.rows(); ++f) {
+    const Eigen::Vector3d p = S.V.row(S.F(f, 0)), q = S.V.row(S.F(f, 1)), s = S.V.row(S.F(f, 2));
+    const Eigen::Vector2d a = pc.uv.row(S.F(f, 0)), b = pc.uv.row(S.F(f, 1)), c = pc.uv.row(S.F(f, 2));
+    const double A3 = 0.5 * (q - p).cross(s - p).norm();
+    ASSERT_GT(A3, 0.0) << "face " << f << " has zero 3D area";
+    jac.push_back(0.5 * ((b - a)(0) * (c - a)(1) - (c - a)(0) * (b - a)(1)) / A3);
+  }
+  const double jmin = *std::min_element(jac.begin(), jac.end());
+  std::nth_element(jac.begin(), jac.begin() + static_cast<std::ptrdiff_t>(jac.size() / 2), jac.end());
+  const double jmed = jac[jac.size() / 2];
+  ASSERT_GT(jmed, 0.0);
+  RecordProperty("min_over_median_jacobian", std::to_string(jmin / jmed));
+  RecordProperty("uv_weights", pc.weights);
+  EXPECT_GT(jmin / jmed, 1e-4) << "min Jacobian " << jmin << ", median " << jmed << " (" << pc.weights << ")";
   // The image covers the domain: total area = W H - holes.
   double domain_area = pc.domain.width * pc.domain.height;
   for (const auto& h : pc.domain.holes) domain_area -= (h(2) - h(0)) * (h(3) - h(1));

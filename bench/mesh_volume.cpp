@@ -1,12 +1,17 @@
 // Offset and tetrahedralization timings on the shared models.
-// Usage: bench_mesh_volume offset | pelvis_tets | propeller_tets
+// Usage: bench_mesh_volume offset [pelvis|propeller] [D] | pelvis_tets | propeller_tets
+//   offset defaults to the pelvis at D = 0.8; the propeller has no default D
+//   (its thin blades vanish at 0.3), so give one, e.g. 0.15.
 // Each case runs in its own process so that peak memory (VmHWM) is its own.
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "igaprep/mesh/check_surface.h"
 #include "igaprep/mesh/offset_surface.h"
 #include "igaprep/mesh/read_surface.h"
 #include "igaprep/mesh/tetrahedralize.h"
@@ -35,7 +40,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   using namespace igaprep::mesh;
   const std::string what = argc > 1 ? argv[1] : "";
   const std::string models = IGAPREP_SHARED_MODELS_DIR;
@@ -45,11 +50,26 @@ int main(int argc, char** argv) {
     return 1;
   }
   if (what == "offset") {
-    const TriMesh outer = read_surface(pelvis);
+    const std::string model = argc > 2 ? argv[2] : "pelvis";
+    if (model != "pelvis" && model != "propeller") {
+      std::fprintf(stderr, "offset: unknown model '%s' (pelvis or propeller)\n", model.c_str());
+      return 2;
+    }
+    if (model == "propeller" && argc <= 3) {
+      std::fprintf(stderr, "offset propeller: give D (e.g. 0.15; 0.3 is refused, the blades vanish)\n");
+      return 2;
+    }
+    const double d = argc > 3 ? std::atof(argv[3]) : 0.8;
+    const TriMesh outer = read_surface(model == "pelvis" ? pelvis : propeller);
     const auto t0 = std::chrono::steady_clock::now();
-    const TriMesh inner = offset_inward(outer, {0.8});
-    std::printf("offset pelvis D=0.8: %.2f s, %d -> %d triangles, VmHWM %ld MiB\n", seconds_since(t0),
-                int(outer.F.rows()), int(inner.F.rows()), vm_hwm_kib() / 1024);
+    const TriMesh inner = offset_inward(outer, {d});
+    const double t = seconds_since(t0);
+    const long hwm = vm_hwm_kib();  // before the check below adds its own memory
+    TriMesh checked = inner;
+    const SurfaceReport rep = check_surface(checked, "offset");
+    std::printf("offset %s D=%g: %.2f s, %d -> %d triangles, genus %d, self-intersections %d, VmHWM %ld MiB\n",
+                model.c_str(), d, t, int(outer.F.rows()), int(inner.F.rows()), rep.genus, rep.self_intersections,
+                hwm / 1024);
   } else if (what == "pelvis_tets") {
     const TriMesh outer = read_surface(pelvis);
     const auto t0 = std::chrono::steady_clock::now();
@@ -69,8 +89,17 @@ int main(int argc, char** argv) {
                 seconds_since(t0), int(tm.T.rows()), int(tm.V.rows()), vm_hwm_kib() / 1024,
                 children_max_rss_kib() / 1024);
   } else {
-    std::fprintf(stderr, "usage: %s offset | pelvis_tets | propeller_tets\n", argv[0]);
+    std::fprintf(stderr, "usage: %s offset [pelvis|propeller] [D] | pelvis_tets | propeller_tets\n", argv[0]);
     return 2;
   }
   return 0;
+}
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {  // e.g. a refused offset distance
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  }
 }

@@ -30,7 +30,9 @@ void add_run_command(CLI::App& app) {
     StageTimer validate_timer;
     const CaseSurfaces surfaces = load_case_surfaces(c);
     std::printf("validate   %7.2f s  %zu surface(s), nested", validate_timer.seconds(), surfaces.meshes.size());
-    for (const auto& r : surfaces.reports) std::printf("; %s: %d faces, genus %d", r.file.c_str(), r.faces, r.genus);
+    for (std::size_t i = 0; i < surfaces.reports.size(); ++i)
+      std::printf("; %s: %d faces, genus %d", surfaces.names[i].c_str(), surfaces.reports[i].faces,
+                  surfaces.reports[i].genus);
     std::printf("\n");
     std::fflush(stdout);
 

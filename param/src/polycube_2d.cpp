@@ -109,6 +109,17 @@ bool corners_ok(const std::vector<double>& s, std::array<int, 4> c, std::size_t 
   return true;
 }
 
+// Appends the vertices a split created and replaces the faces by the split ones.
+void append_split(mesh::TriMesh& m, const std::vector<Eigen::RowVector3d>& newV,
+                  const std::vector<std::array<int, 3>>& faces) {
+  const Eigen::Index nv = m.V.rows();
+  m.V.conservativeResize(nv + static_cast<Eigen::Index>(newV.size()), 3);
+  for (std::size_t i = 0; i < newV.size(); ++i) m.V.row(nv + static_cast<Eigen::Index>(i)) = newV[i];
+  m.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    for (int k = 0; k < 3; ++k) m.F(static_cast<Eigen::Index>(f), k) = faces[f][k];
+}
+
 }  // namespace
 
 const char* to_string(DomainSide side) {
@@ -195,12 +206,7 @@ int split_boundary_ears(mesh::TriMesh& m) {
       }
       if (!split) faces.push_back({m.F(f, 0), m.F(f, 1), m.F(f, 2)});
     }
-    const Eigen::Index nv = m.V.rows();
-    m.V.conservativeResize(nv + static_cast<Eigen::Index>(newV.size()), 3);
-    for (std::size_t i = 0; i < newV.size(); ++i) m.V.row(nv + static_cast<Eigen::Index>(i)) = newV[i];
-    m.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
-    for (std::size_t f = 0; f < faces.size(); ++f)
-      for (int k = 0; k < 3; ++k) m.F(static_cast<Eigen::Index>(f), k) = faces[f][k];
+    append_split(m, newV, faces);
   }
   return total;
 }
@@ -360,12 +366,7 @@ int refine_hole_corners(mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops
         faces.push_back({mca, mbc, c});
       }
     }
-    const Eigen::Index nv = m.V.rows();
-    m.V.conservativeResize(nv + static_cast<Eigen::Index>(newV.size()), 3);
-    for (std::size_t i = 0; i < newV.size(); ++i) m.V.row(nv + static_cast<Eigen::Index>(i)) = newV[i];
-    m.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
-    for (std::size_t f = 0; f < faces.size(); ++f)
-      for (int k = 0; k < 3; ++k) m.F(static_cast<Eigen::Index>(f), k) = faces[f][k];
+    append_split(m, newV, faces);
   }
   return total;
 }

@@ -60,6 +60,22 @@ void phi_derivatives(const Eigen::Vector3d& x, double& phi, Eigen::Vector3d& gra
 
 const Eigen::Vector3d kC(1.0, -0.6, 0.8);
 
+// The manufactured displacement u = phi c and its gradient.
+Eigen::Vector3d exact(const Eigen::Vector3d& x) {
+  double phi;
+  Eigen::Vector3d g;
+  Eigen::Matrix3d H;
+  phi_derivatives(x, phi, g, H);
+  return phi * kC;
+}
+Eigen::Matrix3d exact_grad(const Eigen::Vector3d& x) {
+  double phi;
+  Eigen::Vector3d g;
+  Eigen::Matrix3d H;
+  phi_derivatives(x, phi, g, H);
+  return kC * g.transpose();
+}
+
 struct Level {
   double h, l2, energy;
 };
@@ -92,20 +108,6 @@ std::vector<Level> convergence(int p, const std::vector<int>& elements) {
     Eigen::Matrix3d H;
     phi_derivatives(x, phi, g, H);
     return Eigen::Vector3d(-((lame.lambda + lame.mu) * H * kC + lame.mu * H.trace() * kC));
-  };
-  auto exact = [](const Eigen::Vector3d& x) {
-    double phi;
-    Eigen::Vector3d g;
-    Eigen::Matrix3d H;
-    phi_derivatives(x, phi, g, H);
-    return Eigen::Vector3d(phi * kC);
-  };
-  auto exact_grad = [](const Eigen::Vector3d& x) {
-    double phi;
-    Eigen::Vector3d g;
-    Eigen::Matrix3d H;
-    phi_derivatives(x, phi, g, H);
-    return Eigen::Matrix3d(kC * g.transpose());
   };
   std::vector<Level> out;
   for (int n : elements) {
@@ -147,20 +149,6 @@ TEST(SolveManufactured, ExactFieldNormMatchesIndependentQuadrature) {
   mp.patches = {sector_patch(1.0, 2.0, 0.0, kPi / 2, 0.0, 1.0)};
   mp.materials = {{"m", 200.0, 0.3}};
   mp.patches[0].displacement = Eigen::MatrixXd::Zero(mp.patches[0].control_points.rows(), 3);
-  auto exact = [](const Eigen::Vector3d& x) {
-    double phi;
-    Eigen::Vector3d g;
-    Eigen::Matrix3d H;
-    phi_derivatives(x, phi, g, H);
-    return Eigen::Vector3d(phi * kC);
-  };
-  auto exact_grad = [](const Eigen::Vector3d& x) {
-    double phi;
-    Eigen::Vector3d g;
-    Eigen::Matrix3d H;
-    phi_derivatives(x, phi, g, H);
-    return Eigen::Matrix3d(kC * g.transpose());
-  };
   const auto err = iga_check::elasticity_errors(mp, exact, exact_grad, 6);
   // Polar coordinates, midpoint-free Gauss rule with many points.
   Eigen::VectorXd gp, gw;

@@ -9,13 +9,7 @@
 using namespace spline_test;
 
 TEST(SplineEvaluate, NurbsQuarterCircleIsExact) {
-  Curve c;
-  c.degree = 2;
-  c.knots = {0, 0, 0, 1, 1, 1};
-  c.control_points.resize(3, 3);
-  c.control_points << 1, 0, 0, 1, 1, 0, 0, 1, 0;
-  c.weights.resize(3);
-  c.weights << 1, std::sqrt(0.5), 1;
+  const Curve c = quarter_circle();
   double worst = 0;
   for (int i = 0; i <= 1000; ++i) {
     const double u = i / 1000.0;

@@ -72,13 +72,7 @@ TEST(SplineRefine, DegreeElevationKeepsGeometry) {
 }
 
 TEST(SplineRefine, CurveAndSurfaceRefinement) {
-  Curve c;
-  c.degree = 2;
-  c.knots = {0, 0, 0, 1, 1, 1};
-  c.control_points.resize(3, 3);
-  c.control_points << 1, 0, 0, 1, 1, 0, 0, 1, 0;
-  c.weights.resize(3);
-  c.weights << 1, std::sqrt(0.5), 1;
+  const Curve c = quarter_circle();
   const Curve r = elevate_degree(insert_knots(c, {0.3, 0.6}), 2);
   for (int i = 0; i <= 200; ++i) EXPECT_LT(std::abs(evaluate_point(r, i / 200.0).norm() - 1.0), 1e-14);
 }

@@ -52,6 +52,18 @@ inline Patch random_patch(std::mt19937& rng, std::array<int, 3> deg, std::array<
   return P;
 }
 
+// Exact NURBS quarter of the unit circle in the xy plane (quadratic, one span).
+inline Curve quarter_circle() {
+  Curve c;
+  c.degree = 2;
+  c.knots = {0, 0, 0, 1, 1, 1};
+  c.control_points.resize(3, 3);
+  c.control_points << 1, 0, 0, 1, 1, 0, 0, 1, 0;
+  c.weights.resize(3);
+  c.weights << 1, std::sqrt(0.5), 1;
+  return c;
+}
+
 // Quarter annulus: u = angle (quadratic NURBS), v = radius 1..2, w = height 0..1.
 inline Patch quarter_annulus() {
   Patch P;

@@ -288,6 +288,127 @@ void scatter(Pattern& P, const std::vector<int>& gid, const Eigen::MatrixXd& Ke)
   }
 }
 
+// Calls f(ev, q, normal, dA) at every Gauss point of boundary side b: the
+// side's fixed direction is a one-point table at its end, the other two use
+// the patch's volume tables. `normal` is the unit outward normal; points
+// where the side collapses (zero area) are skipped.
+template <class F>
+void for_side_points(const spline::Patch& pa, int side, const std::array<std::vector<detail::DirElement>, 3>& tables,
+                     F&& f) {
+  const int d = spline::side_direction(side);
+  const bool at_max = spline::side_is_max(side);
+  const auto t = spline::side_tangent_directions(side);
+  const std::vector<double>& U = pa.knots[d];
+  const int nd = pa.count(d);
+  std::vector<detail::DirElement> fixed_dir{
+      detail::direction_point(U, pa.degrees[d], at_max ? U[nd] : U[pa.degrees[d]])};
+  std::array<const std::vector<detail::DirElement>*, 3> dirs;
+  for (int k = 0; k < 3; ++k) dirs[k] = k == d ? &fixed_dir : &tables[k];
+  detail::ElementValues ev;
+  for (const auto& ew : *dirs[2])
+    for (const auto& evv : *dirs[1])
+      for (const auto& eu : *dirs[0]) {
+        detail::element_values(pa, eu, evv, ew, false, ev);
+        for (Eigen::Index q = 0; q < ev.w.size(); ++q) {
+          Eigen::Matrix3d J;
+          for (int c = 0; c < 3; ++c)
+            for (int k = 0; k < 3; ++k) J(c, k) = ev.J(q, 3 * c + k);
+          Eigen::Vector3d nv = J.col(t[0]).cross(J.col(t[1]));
+          const double area = nv.norm();
+          if (area == 0.0) continue;  // a collapsed point of the face carries no load
+          nv /= area;
+          // Outward: against the inward parameter direction at a min side.
+          const double s = nv.dot(J.col(d));
+          if (at_max ? s < 0 : s > 0) nv = -nv;
+          f(ev, q, nv, area * ev.w(q));
+        }
+      }
+}
+
+// L2 projection of the prescribed displacements onto the spline space traced
+// on the prescribed sides, all sides together: one boundary mass matrix over
+// the global numbering, so a coefficient shared by sides or patches gets one
+// value. Outputs: prescribed[g] (0/1) and values (ncp x 3, rows of
+// non-prescribed points zero).
+void project_prescribed(const spline::MultiPatch& mp, const spline::GlobalNumbering& num,
+                        const std::vector<std::array<std::vector<detail::DirElement>, 3>>& tables,
+                        const std::vector<PrescribedSide>& prescribed, std::vector<unsigned char>& is_prescribed,
+                        Eigen::MatrixXd& values) {
+  const int ncp = num.count;
+  is_prescribed.assign(ncp, 0);
+  values = Eigen::MatrixXd::Zero(ncp, 3);
+  if (prescribed.empty()) return;
+  struct SideJob {
+    spline::BoundarySide side;
+    const PrescribedSide* what;
+  };
+  std::vector<SideJob> jobs;
+  std::vector<int> compact(ncp, -1);
+  int nd = 0;
+  for (const auto& pr : prescribed)
+    for (const auto& b : sides_with_label(mp, pr.label, "prescribed displacement")) {
+      jobs.push_back({b, &pr});
+      for (int l : spline::side_control_points(mp.patches[b.patch], b.side)) {
+        const int g = num.global[b.patch][l];
+        if (compact[g] < 0) compact[g] = nd++;
+      }
+    }
+  std::vector<Eigen::Triplet<double>> trip;
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(nd, 3);
+  std::vector<int> act_c;
+  std::vector<double> act_r;
+  for (const auto& job : jobs) {
+    const int p = job.side.patch;
+    const spline::Patch& pa = mp.patches[p];
+    // Only functions of the side's own control points are non-zero on it.
+    std::vector<unsigned char> on_side(pa.control_points.rows(), 0);
+    for (int l : spline::side_control_points(pa, job.side.side)) on_side[l] = 1;
+    const std::string& label = job.what->label;
+    for_side_points(pa, job.side.side, tables[p],
+                    [&](const detail::ElementValues& ev, Eigen::Index q, const Eigen::Vector3d&, double dA) {
+                      const Eigen::Vector3d x = ev.x.row(q).transpose();
+                      const Eigen::Vector3d u = job.what->displacement(x);
+                      if (!u.allFinite()) {
+                        std::ostringstream s;
+                        s << "prescribed displacement on '" << label << "': not finite at x = (" << x(0) << ", "
+                          << x(1) << ", " << x(2) << ")";
+                        throw bad_input(s.str());
+                      }
+                      act_c.clear();
+                      act_r.clear();
+                      for (size_t a = 0; a < ev.local.size(); ++a) {
+                        const double r = ev.R(q, static_cast<Eigen::Index>(a));
+                        if (!on_side[ev.local[a]] || r == 0.0) continue;
+                        act_c.push_back(compact[num.global[p][ev.local[a]]]);
+                        act_r.push_back(r);
+                      }
+                      for (size_t i = 0; i < act_c.size(); ++i) {
+                        B.row(act_c[i]) += (act_r[i] * dA) * u.transpose();
+                        for (size_t j = 0; j < act_c.size(); ++j)
+                          if (act_c[j] <= act_c[i])
+                            trip.emplace_back(act_c[i], act_c[j], act_r[i] * act_r[j] * dA);
+                      }
+                    });
+  }
+  SpMat M(nd, nd);
+  M.setFromTriplets(trip.begin(), trip.end());
+  Eigen::SimplicialLDLT<SpMat, Eigen::Lower> ldlt(M);
+  std::string labels;
+  for (const auto& pr : prescribed) labels += (labels.empty() ? "'" : ", '") + pr.label + "'";
+  if (ldlt.info() != Eigen::Success || ldlt.vectorD().size() != nd ||
+      !(ldlt.vectorD().minCoeff() > 1e-13 * ldlt.vectorD().cwiseAbs().maxCoeff()))
+    throw bad_input("prescribed displacement on " + labels +
+                    ": the boundary mass matrix is singular (a side of zero area?)");
+  const Eigen::MatrixXd C = ldlt.solve(B);
+  if (ldlt.info() != Eigen::Success || !C.allFinite())
+    throw internal_error("prescribed displacement on " + labels + ": the L2 projection failed");
+  for (int g = 0; g < ncp; ++g)
+    if (compact[g] >= 0) {
+      is_prescribed[g] = 1;
+      values.row(g) = C.row(compact[g]);
+    }
+}
+
 }  // namespace
 
 ElasticitySolution solve_elasticity(const spline::MultiPatch& input, const ElasticityProblem& problem,
@@ -306,6 +427,10 @@ ElasticitySolution solve_elasticity(const spline::MultiPatch& input, const Elast
       throw bad_input("patch " + std::to_string(p) + ": material index " + std::to_string(input.patches[p].material) +
                       " has no entry in the model's materials");
   for (const auto& f : problem.fixed) sides_with_label(input, f.label, "--fix");
+  for (const auto& pr : problem.prescribed) {
+    sides_with_label(input, pr.label, "prescribed displacement");
+    if (!pr.displacement) throw bad_input("prescribed displacement on '" + pr.label + "': no function given");
+  }
   for (const auto& t : problem.tractions) sides_with_label(input, t.label, "--traction");
   for (const auto& t : problem.pressures) sides_with_label(input, t.label, "--pressure");
   if (!problem.body_force.allFinite()) throw bad_input("the body force is not finite");
@@ -326,15 +451,39 @@ ElasticitySolution solve_elasticity(const spline::MultiPatch& input, const Elast
   for (int p = 0; p < np; ++p)
     for (size_t l = 0; l < num.global[p].size(); ++l) X.row(num.global[p][l]) = mp.patches[p].control_points.row(l);
 
+  // 1-D element tables per patch and direction (volume and side quadrature).
+  std::vector<std::array<std::vector<detail::DirElement>, 3>> tables(np);
+  for (int p = 0; p < np; ++p) tables[p] = patch_tables(mp.patches[p], options.extra_quadrature);
+
   // Constraints: the side's control points carry its trace (open knot vectors).
+  // Prescribed values first; a FixedSide component then sets its value to zero.
   std::vector<unsigned char> fixed(3 * static_cast<size_t>(ncp), 0);
+  Eigen::VectorXd ud = Eigen::VectorXd::Zero(3 * static_cast<Eigen::Index>(ncp));  // constrained values
+  {
+    const auto t_proj = Clock::now();
+    std::vector<unsigned char> is_prescribed;
+    Eigen::MatrixXd values;
+    project_prescribed(mp, num, tables, problem.prescribed, is_prescribed, values);
+    for (int g = 0; g < ncp; ++g)
+      if (is_prescribed[g])
+        for (int i = 0; i < 3; ++i) {
+          fixed[3 * g + i] = 1;
+          ud(3 * g + i) = values(g, i);
+        }
+    rep.projection_seconds = seconds_since(t_proj);
+  }
+  std::vector<unsigned char> zero_fixed(3 * static_cast<size_t>(ncp), 0);
   for (const auto& f : problem.fixed) {
     if (!f.components[0] && !f.components[1] && !f.components[2])
       throw bad_input("--fix " + f.label + ": no component chosen");
     for (const auto& b : sides_with_label(mp, f.label, "--fix"))
       for (int l : spline::side_control_points(mp.patches[b.patch], b.side))
         for (int i = 0; i < 3; ++i)
-          if (f.components[i]) fixed[3 * num.global[b.patch][l] + i] = 1;
+          if (f.components[i]) {
+            fixed[3 * num.global[b.patch][l] + i] = 1;
+            zero_fixed[3 * num.global[b.patch][l] + i] = 1;
+            ud(3 * num.global[b.patch][l] + i) = 0.0;
+          }
   }
   check_rigid_modes(mp, num, X, fixed);
 
@@ -345,13 +494,13 @@ ElasticitySolution solve_elasticity(const spline::MultiPatch& input, const Elast
     if (!fixed[k]) P.eq[k] = neq++;
   rep.unknowns = neq;
   rep.fixed_dofs = static_cast<long long>(fixed.size()) - neq;
+  for (size_t k = 0; k < fixed.size(); ++k) rep.prescribed_dofs += fixed[k] && !zero_fixed[k];
+  const bool has_prescribed = rep.prescribed_dofs > 0;
 
   // Elements and their global control points.
-  std::vector<std::array<std::vector<detail::DirElement>, 3>> tables(np);
   std::vector<std::vector<int>> element_cps;
   for (int p = 0; p < np; ++p) {
     const spline::Patch& pa = mp.patches[p];
-    tables[p] = patch_tables(pa, options.extra_quadrature);
     for (const auto& ew : tables[p][2])
       for (const auto& ev : tables[p][1])
         for (const auto& eu : tables[p][0]) {
@@ -369,11 +518,16 @@ ElasticitySolution solve_elasticity(const spline::MultiPatch& input, const Elast
   rep.nonzeros = P.K.nonZeros();
 
   Eigen::VectorXd F = Eigen::VectorXd::Zero(neq);
+  // Prescribed values enter the right-hand side as -K_fd u_d; Kfd_ud and
+  // ud_Kdd_ud complete the strain energy of the whole field.
+  Eigen::VectorXd Kfd_ud = Eigen::VectorXd::Zero(neq);
+  double ud_Kdd_ud = 0.0;
   const bool has_body = problem.body_force.squaredNorm() > 0.0 || static_cast<bool>(problem.body_force_function);
   {
     Progress progress("assembling stiffness", element_cps.size());
     detail::ElementValues ev;
     Eigen::MatrixXd Ke, work;
+    Eigen::VectorXd ue, Ku_e;
     size_t e = 0;
     for (int p = 0; p < np; ++p) {
       const spline::Patch& pa = mp.patches[p];
@@ -389,6 +543,28 @@ ElasticitySolution solve_elasticity(const spline::MultiPatch& input, const Elast
             element_stiffness(ev.grad, wdet, lm, Ke, work);
             const std::vector<int>& gid = element_cps[e];
             scatter(P, gid, Ke);
+            if (has_prescribed) {
+              const int n = static_cast<int>(gid.size());
+              ue.setZero(3 * n);
+              bool any = false;
+              for (int a = 0; a < n; ++a)
+                for (int i = 0; i < 3; ++i) {
+                  const double v = ud(3 * gid[a] + i);
+                  if (v != 0.0) {
+                    ue(i * n + a) = v;
+                    any = true;
+                  }
+                }
+              if (any) {
+                Ku_e.noalias() = Ke * ue;
+                ud_Kdd_ud += ue.dot(Ku_e);
+                for (int a = 0; a < n; ++a)
+                  for (int i = 0; i < 3; ++i) {
+                    const int r = P.eq[3 * gid[a] + i];
+                    if (r >= 0) Kfd_ud(r) += Ku_e(i * n + a);
+                  }
+              }
+            }
             if (has_body) {
               const int n = static_cast<int>(gid.size());
               for (Eigen::Index q = 0; q < wdet.size(); ++q) {
@@ -407,52 +583,27 @@ ElasticitySolution solve_elasticity(const spline::MultiPatch& input, const Elast
     progress.finish();
   }
 
-  // Surface loads: the side's fixed direction is a one-point table at its end.
+  // Surface loads: Gauss points of the side's elements.
   auto add_surface_load = [&](const spline::BoundarySide& b, const Eigen::Vector3d& traction, double pressure) {
-    const spline::Patch& pa = mp.patches[b.patch];
-    const int d = spline::side_direction(b.side);
-    const bool at_max = spline::side_is_max(b.side);
-    const auto t = spline::side_tangent_directions(b.side);
-    const std::vector<double>& U = pa.knots[d];
-    const int nd = pa.count(d);
-    std::vector<detail::DirElement> fixed_dir{
-        detail::direction_point(U, pa.degrees[d], at_max ? U[nd] : U[pa.degrees[d]])};
-    std::array<const std::vector<detail::DirElement>*, 3> dirs;
-    for (int k = 0; k < 3; ++k) dirs[k] = k == d ? &fixed_dir : &tables[b.patch][k];
-    detail::ElementValues ev;
-    for (const auto& ew : *dirs[2])
-      for (const auto& evv : *dirs[1])
-        for (const auto& eu : *dirs[0]) {
-          detail::element_values(pa, eu, evv, ew, false, ev);
-          const int n = static_cast<int>(ev.local.size());
-          for (Eigen::Index q = 0; q < ev.w.size(); ++q) {
-            Eigen::Matrix3d J;
-            for (int c = 0; c < 3; ++c)
-              for (int k = 0; k < 3; ++k) J(c, k) = ev.J(q, 3 * c + k);
-            Eigen::Vector3d nv = J.col(t[0]).cross(J.col(t[1]));
-            const double area = nv.norm();
-            if (area == 0.0) continue;  // a collapsed point of the face carries no load
-            nv /= area;
-            // Outward: against the inward parameter direction at a min side.
-            const double s = nv.dot(J.col(d));
-            if (at_max ? s < 0 : s > 0) nv = -nv;
-            const Eigen::Vector3d tr = traction - pressure * nv;
-            const double dA = area * ev.w(q);
-            for (int a = 0; a < n; ++a) {
-              const int g = num.global[b.patch][ev.local[a]];
-              for (int i = 0; i < 3; ++i) {
-                const int r = P.eq[3 * g + i];
-                if (r >= 0) F(r) += ev.R(q, a) * tr(i) * dA;
-              }
-            }
-          }
-        }
+    for_side_points(mp.patches[b.patch], b.side, tables[b.patch],
+                    [&](const detail::ElementValues& ev, Eigen::Index q, const Eigen::Vector3d& nv, double dA) {
+                      const Eigen::Vector3d tr = traction - pressure * nv;
+                      const int n = static_cast<int>(ev.local.size());
+                      for (int a = 0; a < n; ++a) {
+                        const int g = num.global[b.patch][ev.local[a]];
+                        for (int i = 0; i < 3; ++i) {
+                          const int r = P.eq[3 * g + i];
+                          if (r >= 0) F(r) += ev.R(q, a) * tr(i) * dA;
+                        }
+                      }
+                    });
   };
   for (const auto& tl : problem.tractions)
     for (const auto& b : sides_with_label(mp, tl.label, "--traction")) add_surface_load(b, tl.traction, 0.0);
   for (const auto& pl : problem.pressures)
     for (const auto& b : sides_with_label(mp, pl.label, "--pressure"))
       add_surface_load(b, Eigen::Vector3d::Zero(), pl.pressure);
+  F -= Kfd_ud;
   rep.assembly_seconds = seconds_since(t_assembly);
 
   // Solve.
@@ -497,16 +648,17 @@ ElasticitySolution solve_elasticity(const spline::MultiPatch& input, const Elast
   }
   rep.solve_seconds = seconds_since(t_solve);
   const Eigen::VectorXd Ku = P.K.selfadjointView<Eigen::Lower>() * u;
-  rep.strain_energy = 0.5 * u.dot(Ku);
+  rep.strain_energy = 0.5 * u.dot(Ku) + u.dot(Kfd_ud) + 0.5 * ud_Kdd_ud;
 
-  // Coefficients per patch; fixed components are zero.
+  // Coefficients per patch; constrained components take their values (zero or prescribed).
   for (int p = 0; p < np; ++p) {
     spline::Patch& pa = mp.patches[p];
     pa.displacement = Eigen::MatrixXd::Zero(pa.control_points.rows(), 3);
     for (Eigen::Index l = 0; l < pa.displacement.rows(); ++l)
       for (int i = 0; i < 3; ++i) {
-        const int r = P.eq[3 * num.global[p][l] + i];
-        if (r >= 0) pa.displacement(l, i) = u(r);
+        const int g = num.global[p][l];
+        const int r = P.eq[3 * g + i];
+        pa.displacement(l, i) = r >= 0 ? u(r) : ud(3 * g + i);
       }
     if (pa.displacement.rows() > 0)
       rep.max_displacement = std::max(rep.max_displacement, pa.displacement.rowwise().norm().maxCoeff());

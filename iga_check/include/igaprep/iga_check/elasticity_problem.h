@@ -16,6 +16,17 @@ struct FixedSide {
   std::array<bool, 3> components{{true, true, true}};  // x, y, z
 };
 
+// Prescribed (generally non-zero) displacement u(x) on every side labelled
+// `label`. The constrained coefficients (the control points of all prescribed
+// sides) take the values of the L2 projection of the prescribed functions onto
+// the spline space traced on those sides, assembled globally so a coefficient
+// shared by several sides or patches gets one value (docs/elasticity-solver.md).
+// A component that a FixedSide also constrains is zero.
+struct PrescribedSide {
+  std::string label;
+  std::function<Eigen::Vector3d(const Eigen::Vector3d&)> displacement;
+};
+
 // Constant traction vector (force per area) on every side labelled `label`.
 struct TractionLoad {
   std::string label;
@@ -31,6 +42,7 @@ struct PressureLoad {
 
 struct ElasticityProblem {
   std::vector<FixedSide> fixed;
+  std::vector<PrescribedSide> prescribed;
   std::vector<TractionLoad> tractions;
   std::vector<PressureLoad> pressures;
   Eigen::Vector3d body_force = Eigen::Vector3d::Zero();  // force per volume
@@ -53,13 +65,15 @@ struct ElasticityOptions {
 
 struct ElasticityReport {
   long long unknowns = 0;        // free scalar unknowns after eliminating constraints
-  long long fixed_dofs = 0;      // scalar coefficients set to zero by constraints
+  long long fixed_dofs = 0;      // scalar coefficients set by constraints (zero or prescribed)
+  long long prescribed_dofs = 0; // of which set by PrescribedSide (L2 projection)
   long long nonzeros = 0;        // stored non-zeros of the stiffness matrix (one triangle)
   long long elements = 0;        // knot-span elements integrated
   long long quadrature_points = 0;
   double assembly_seconds = 0.0;
   double solve_seconds = 0.0;
-  double strain_energy = 0.0;    // 1/2 u^T K u
+  double projection_seconds = 0.0;  // L2 projection of prescribed displacements (in assembly_seconds)
+  double strain_energy = 0.0;    // 1/2 u^T K u (all coefficients, prescribed included)
   double max_displacement = 0.0; // largest |u| over the control coefficients (see docs)
   int cg_iterations = 0;
   double cg_residual = 0.0;

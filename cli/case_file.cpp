@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "case_midsurface.h"
+#include "case_volume.h"
 #include "igaprep/core/error.h"
 
 namespace igaprep::cli {
@@ -157,6 +158,8 @@ CaseFile read_case_file(const std::string& path) {
     if (c.tetmesh.max_volume < 0.0) tr.fail("'tetmesh.max_volume' must be 0 (none) or positive");
   }
   if (const json* m = r.find("midsurface")) c.midsurface = parse_midsurface_options(*m, path);
+  if (const json* d = r.find("decomposition")) c.volume = parse_decomposition_options(*d, path);
+  if (const json* f = r.find("fit")) c.fit = parse_fit_options(*f, path);
   c.midsurface.tetgen = c.tetmesh;
   r.refuse_unknown();
   return c;

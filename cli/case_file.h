@@ -7,6 +7,8 @@
 
 #include "igaprep/mesh/tetrahedralize.h"
 #include "igaprep/param/midsurface_pipeline.h"
+#include "igaprep/param/volume_param.h"
+#include "igaprep/spline/block_fit.h"
 
 namespace igaprep::cli {
 
@@ -31,6 +33,8 @@ struct CaseFile {
   std::string output_dir;  // resolved against the case file's folder
   mesh::TetgenOptions tetmesh;
   param::MidsurfaceOptions midsurface;  // section "midsurface" (docs/midsurface.md)
+  param::VolumeParamOptions volume;     // section "decomposition" (docs/decomposition.md)
+  spline::BlockFitOptions fit;          // section "fit"
 };
 
 // Reads and validates a case file. Unknown keys, wrong types, missing files

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <fstream>
 
+#include "case_json.h"
 #include "igaprep/core/error.h"
 
 namespace igaprep::cli {
@@ -10,16 +11,11 @@ namespace {
 
 using nlohmann::json;
 
-[[noreturn]] void fail(const std::string& file, const std::string& message) { throw bad_input(file + ": " + message); }
+[[noreturn]] void fail(const std::string& file, const std::string& message) { case_fail(file, message); }
 
 void refuse_unknown(const json& object, const std::vector<std::string>& known, const std::string& where,
                     const std::string& file) {
-  for (auto it = object.begin(); it != object.end(); ++it) {
-    if (std::find(known.begin(), known.end(), it.key()) != known.end()) continue;
-    std::string list;
-    for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-    fail(file, "unknown key '" + where + "." + it.key() + "' (known here: " + list + ")");
-  }
+  refuse_unknown_keys(object, known, where, file);
 }
 
 Eigen::Vector3d point3(const json& v, const std::string& where, const std::string& file) {

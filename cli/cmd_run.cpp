@@ -8,10 +8,13 @@
 #include "case_file.h"
 #include "case_surfaces.h"
 #include "commands.h"
+#include "igaprep/export/hdf5_model.h"
 #include "igaprep/models/builtin_models.h"
 #include "stage_midsurface.h"
 #include "stage_tetmesh.h"
+#include "stage_check.h"
 #include "stage_timer.h"
+#include "stage_volume.h"
 
 namespace igaprep::cli {
 
@@ -37,7 +40,12 @@ void add_run_command(CLI::App& app) {
     std::fflush(stdout);
 
     run_tetmesh_stage(c, surfaces, (std::filesystem::path(dir) / "tetmesh.vtu").string());
-    run_midsurface_stage(c, surfaces, dir);
+    const param::MidsurfaceResult mid = run_midsurface_stage(c, surfaces, dir);
+    const VolumeStageResult volume = run_volume_stages(c, surfaces, mid, dir, false);
+    std::filesystem::create_directories(dir);
+    exporter::write_hdf5_model(volume.model, (std::filesystem::path(dir) / "model.h5").string());
+    CheckFigures figures;
+    run_check_stage(volume.model, surfaces.meshes, volume.model.labels, {}, dir, &figures);
     return 0;
   });
 }

@@ -1,0 +1,31 @@
+#include "case_volume.h"
+
+#include "case_json.h"
+
+namespace igaprep::cli {
+
+param::VolumeParamOptions parse_decomposition_options(const nlohmann::json& s, const std::string& file) {
+  if (!s.is_object()) case_fail(file, "'decomposition' must be an object");
+  refuse_unknown_keys(s, {"blend", "strategy", "theta", "w0"}, "decomposition", file);
+  param::VolumeParamOptions o;
+  o.strategy = static_cast<int>(case_number(s, "strategy", o.strategy, 1, 2, "decomposition", file));
+  if (s.contains("strategy") && !s["strategy"].is_number_integer())
+    case_fail(file, "'decomposition.strategy' must be 1 or 2");
+  o.theta = case_number(s, "theta", o.theta, 0.05, 1.5, "decomposition", file);
+  o.w0 = case_number(s, "w0", o.w0, 0.0, 1.0, "decomposition", file);
+  o.blend = case_number(s, "blend", o.blend, 0.01, 0.5, "decomposition", file);
+  return o;
+}
+
+spline::BlockFitOptions parse_fit_options(const nlohmann::json& s, const std::string& file) {
+  if (!s.is_object()) case_fail(file, "'fit' must be an object");
+  refuse_unknown_keys(s, {"degree", "elements"}, "fit", file);
+  spline::BlockFitOptions o;
+  for (const char* key : {"degree", "elements"})
+    if (s.contains(key) && !s[key].is_number_integer()) case_fail(file, std::string("'fit.") + key + "' must be an integer");
+  o.degree = static_cast<int>(case_number(s, "degree", o.degree, 1, 5, "fit", file));
+  o.elements = static_cast<int>(case_number(s, "elements", o.elements, 1, 32, "fit", file));
+  return o;
+}
+
+}  // namespace igaprep::cli

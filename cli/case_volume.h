@@ -1,0 +1,17 @@
+#pragma once
+// The "decomposition" and "fit" sections of a case file (docs/case-format.md):
+//   "decomposition": {"strategy": 2, "theta": 0.785, "w0": 0.75, "blend": 0.25},
+//   "fit": {"degree": 3, "elements": 4}
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "igaprep/param/volume_param.h"
+#include "igaprep/spline/block_fit.h"
+
+namespace igaprep::cli {
+
+param::VolumeParamOptions parse_decomposition_options(const nlohmann::json& section, const std::string& file);
+spline::BlockFitOptions parse_fit_options(const nlohmann::json& section, const std::string& file);
+
+}  // namespace igaprep::cli

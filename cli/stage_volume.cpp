@@ -1,0 +1,85 @@
+#include "stage_volume.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "igaprep/mesh/write_vtu.h"
+#include "igaprep/param/base_layout.h"
+#include "igaprep/param/decomposition_mesh.h"
+#include "igaprep/param/inset_base.h"
+#include "igaprep/param/w_field.h"
+#include "igaprep/spline/find_interfaces.h"
+#include "stage_timer.h"
+
+namespace igaprep::cli {
+
+VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfaces,
+                                    const param::MidsurfaceResult& mid, const std::string& dir, bool keep_intermediate) {
+  namespace fs = std::filesystem;
+  const int n = static_cast<int>(surfaces.meshes.size());
+
+  StageTimer t_decomp;
+  const param::InsetBase base = param::inset_base_surface(mid.m0trim.mesh, mid.polycube, c.midsurface.m0);
+  const param::DecompositionMesh H = param::decomposition_mesh(surfaces.meshes, base.mesh, c.tetmesh);
+  const param::WField w = param::w_field(H);
+  const param::BaseLayout layout = param::base_layout(base);
+  std::printf("decompose  %7.2f s  H: %lld vertices, %lld tets; w: %zu interior extrema; M: %zu rectangles, %zu "
+              "boundary segments\n",
+              t_decomp.seconds(), static_cast<long long>(H.tets.V.rows()), static_cast<long long>(H.tets.T.rows()),
+              w.extrema.size(), layout.rectangles.size(), layout.crests.size());
+  std::fflush(stdout);
+  if (keep_intermediate) {
+    fs::create_directories(dir);
+    mesh::VtuMesh v = mesh::vtu_tets(H.tets);
+    v.add_point_data("w", w.w);
+    mesh::write_vtu((fs::path(dir) / "decomposition_w.vtu").string(), v);
+  }
+
+  StageTimer t_param;
+  const spline::BlockFitOptions fit_options = c.fit;
+  const param::VolumeParam vp =
+      param::build_volume_param(H, w, layout, spline::block_sample_params(fit_options), c.volume);
+  std::printf("param      %7.2f s  strategy 2, w0 = %.3f: %zu blocks (%d core faces x %d layers + core), %d "
+              "streamlines, %d folded sample cells\n",
+              t_param.seconds(), vp.w0, vp.blocks.size(), vp.core_faces, vp.layers, vp.streamlines, vp.folded_cells);
+  std::fflush(stdout);
+
+  StageTimer t_fit;
+  VolumeStageResult out;
+  spline::MultiPatch& mp = out.model;
+  for (const auto& s : c.surfaces) mp.labels.push_back(s.label);
+  for (const auto& m : c.materials) mp.materials.push_back({m.name, m.young_modulus, m.poisson_ratio});
+  for (const auto& b : vp.blocks) {
+    spline::Patch p = spline::interpolate_block(b.samples, fit_options);
+    p.material = b.material;
+    mp.patches.push_back(std::move(p));
+  }
+  const Eigen::MatrixXd& V = H.tets.V;
+  const double diag = (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm();
+  out.stitched = spline::stitch_control_points(mp, 1e-9 * diag, &out.max_stitch);
+  spline::find_interfaces(mp, 1e-12 * diag);
+  // Interfaces between materials lie on the Ti between them.
+  for (auto& itf : mp.interfaces) {
+    const int ma = mp.patches[itf.patch_a].material, mb = mp.patches[itf.patch_b].material;
+    if (ma != mb) itf.surface = std::max(ma, mb);
+  }
+  std::vector<std::array<bool, 6>> on_interface(mp.patches.size(), std::array<bool, 6>{});
+  for (const auto& itf : mp.interfaces) {
+    on_interface[itf.patch_a][itf.side_a - 1] = true;
+    on_interface[itf.patch_b][itf.side_b - 1] = true;
+  }
+  for (std::size_t p = 0; p < vp.blocks.size(); ++p)
+    for (int s = 0; s < 6; ++s) {
+      const int label = vp.blocks[p].side_label[s];
+      if (label >= 0 && !on_interface[p][s]) mp.boundaries.push_back({static_cast<int>(p), s + 1, label});
+      else if (!on_interface[p][s]) ++out.unmatched_sides;
+    }
+  std::printf("fit        %7.2f s  %zu patches, degree %d, %d elements per direction; %zu interfaces (%d stitched "
+              "points, max move %.1e), %zu T1 sides, %d unmatched sides, %d layer(s)\n",
+              t_fit.seconds(), mp.patches.size(), fit_options.degree, fit_options.elements, mp.interfaces.size(),
+              out.stitched, out.max_stitch, mp.boundaries.size(), out.unmatched_sides, n);
+  std::fflush(stdout);
+  return out;
+}
+
+}  // namespace igaprep::cli

@@ -1,0 +1,51 @@
+#pragma once
+// Values and smoothed gradients of a P1 field on a tet mesh at arbitrary
+// points, the first point along a ray where the field falls to a level, and
+// the walk that finds the tet holding a point. The volume layout uses it to
+// find the iso-surface T(n+1) = {w = w0} around the base surface M and to
+// follow -grad w out to T1 (streamline_column.h).
+#include <Eigen/Core>
+
+#include "igaprep/param/tet_topology.h"
+
+namespace igaprep::param {
+
+class FieldProbe {
+ public:
+  // Inputs: V, tets, their topology, the field (#V) and its per-vertex
+  // gradients (#V x 3, vertex_gradients()). All referenced, not copied.
+  FieldProbe(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, const TetTopology& topology,
+             const Eigen::VectorXd& u, const Eigen::MatrixXd& vertex_gradient)
+      : V_(V), T_(T), topo_(topology), u_(u), grad_(vertex_gradient) {}
+
+  // The tet holding p by a visibility walk from *hint (then a scan when the
+  // walk cycles); -1 when the walk leaves the mesh through its boundary or no
+  // tet holds p. *hint receives the tet found; *bary its barycentric coordinates.
+  int locate(const Eigen::Vector3d& p, int* hint, Eigen::Vector4d* bary) const;
+
+  // u at p (NaN outside the mesh).
+  double value(const Eigen::Vector3d& p, int* hint = nullptr) const;
+
+  // The vertex gradients interpolated linearly at p: a continuous field,
+  // whose streamlines never merge (those of the per-tet gradient do, on
+  // valley edges). Returns false outside the mesh.
+  bool gradient(const Eigen::Vector3d& p, int* hint, Eigen::Vector3d* g) const;
+
+  // Inputs: start (u(start) > level), unit direction, level, step (march
+  // length), max_length. Output: the first point of the ray where u = level
+  // (the first march step that reaches it, then bisection to 1e-12 of the
+  // step). Throws check_failed when the ray leaves the mesh or runs
+  // max_length without reaching the level.
+  Eigen::Vector3d ray_to_level(const Eigen::Vector3d& start, const Eigen::Vector3d& direction, double level,
+                               double step, double max_length) const;
+
+ private:
+  bool coordinates(int c, const Eigen::Vector3d& p, Eigen::Vector4d& b) const;
+  const Eigen::MatrixXd& V_;
+  const Eigen::MatrixXi& T_;
+  const TetTopology& topo_;
+  const Eigen::VectorXd& u_;
+  const Eigen::MatrixXd& grad_;
+};
+
+}  // namespace igaprep::param

@@ -1,0 +1,39 @@
+#pragma once
+// The base surface the volume decomposition is built on: M0trim inset by a
+// distance d in its rectilinear (u, v) domain (the outer rectangle shrunk by
+// d, every hole grown by d), cut exactly along those lines. Like the paper's
+// M = {b >= m0} (section 4.4) it is the midsurface retracted from Tn, but its
+// boundary has real corners where the domain has them: a smooth boundary with
+// marked corners (the b-field M) makes the volume patches above and below M
+// flat (180 degrees) at those corners, a zero scaled Jacobian.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "igaprep/mesh/tri_mesh.h"
+#include "igaprep/param/polycube_2d.h"
+
+namespace igaprep::param {
+
+struct InsetBase {
+  mesh::TriMesh mesh;          // M: the part of M0trim inside the inset domain
+  Eigen::MatrixXd uv;          // #M.V x 2, in the inset domain's coordinates
+  RectilinearDomain domain;    // [0, W - 2d] x [0, H - 2d] with the grown holes
+  double inset = 0.0;          // d, in (u, v) units (= 3D arc length along the domain's sides)
+};
+
+// Inputs: a sheet and its (u, v), a value c, the axis (0: u, 1: v). Splits
+// every triangle that the line uv(axis) = c crosses (orientation kept; new
+// vertices interpolated in 3D and (u, v) along the crossing edges, shared by
+// the two triangles of an edge). Vertices within snap of the line are put on
+// it in (u, v) first (no slivers). Returns the number of edges split.
+int split_sheet_along_line(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, int axis, double c, double snap);
+
+// Inputs: M0trim with its 2D polycube, m0 in (0, 1): d = m0 x half the
+// narrowest band of the domain (its width, its height, and the gaps between
+// holes and between a hole and the outside). Output: the inset sheet.
+// Throws check_failed when the result is not one sheet with one boundary
+// loop per domain boundary.
+InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double m0);
+
+}  // namespace igaprep::param

@@ -1,0 +1,43 @@
+#pragma once
+// Point queries on a triangle sheet through its (u, v) parameterization: the
+// 3D point, the unit normal and the tangents dX/du, dX/dv at any (u, v) of the
+// parameter domain, interpolated linearly inside the (u, v) triangle holding
+// it. The volume layout (volume_layout.h) samples the base surface M this way.
+#include <memory>
+
+#include <Eigen/Core>
+
+#include "igaprep/mesh/tri_mesh.h"
+
+namespace igaprep::param {
+
+struct SheetPoint {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, the side the sheet's triangles face
+  Eigen::Vector3d du = Eigen::Vector3d::Zero(), dv = Eigen::Vector3d::Zero();  // dX/du, dX/dv (vertex averages)
+  int triangle = -1;
+};
+
+class SheetSampler {
+ public:
+  // Inputs: the sheet and its (u, v) per vertex (#V x 2, a bijective map:
+  // every triangle positively oriented). Builds a search tree of the (u, v)
+  // triangles and the per-vertex normals and tangents (area-weighted).
+  SheetSampler(const mesh::TriMesh& sheet, const Eigen::MatrixXd& uv);
+  ~SheetSampler();
+  SheetSampler(const SheetSampler&) = delete;
+  SheetSampler& operator=(const SheetSampler&) = delete;
+
+  // The sheet at (u, v); a point outside the (u, v) image (round-off at the
+  // domain's sides) is taken at the nearest point of the image.
+  SheetPoint at(const Eigen::Vector2d& uv) const;
+
+ private:
+  struct Tree;
+  const mesh::TriMesh& sheet_;
+  const Eigen::MatrixXd& uv_;
+  Eigen::MatrixXd normal_, du_, dv_;  // per vertex
+  std::unique_ptr<Tree> tree_;
+};
+
+}  // namespace igaprep::param

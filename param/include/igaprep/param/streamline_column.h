@@ -1,0 +1,31 @@
+#pragma once
+// A streamline of -grad w from a point down to T1 (w = 0), with w along it:
+// the shell patches of the volume layout sample it at the w-levels of their
+// layers (w = (i - 1)/n on Ti), so the layer faces lie exactly on the Ti.
+// The streamline follows the continuous (vertex-interpolated) gradient, so
+// neighbouring streamlines never merge.
+#include <Eigen/Core>
+
+#include "igaprep/param/field_probe.h"
+
+namespace igaprep::param {
+
+struct StreamlineColumn {
+  Eigen::MatrixXd path;  // k x 3, from the start point to T1
+  Eigen::VectorXd w;     // k: w at each point, made non-increasing (running minimum)
+
+  // The point where w = level (linear along the path); the start point for
+  // level >= w(0), the end for level <= w(end).
+  Eigen::Vector3d at_level(double level) const;
+};
+
+// Inputs: probe of H's w-field, start point (inside H), step length (model
+// units), maximum number of steps. Output: the column, integrated with the
+// midpoint rule along the unit direction -g/|g| until it leaves H through
+// its outer boundary T1 (the last point is on T1, found by bisection).
+// Throws check_failed naming the start point when the gradient vanishes or
+// the step budget runs out.
+StreamlineColumn trace_column(const FieldProbe& probe, const Eigen::Vector3d& start, double step,
+                              int max_steps = 100000);
+
+}  // namespace igaprep::param

@@ -1,0 +1,72 @@
+#pragma once
+// The volumetric parameterization of strategy 2 (seed paper, section 6):
+// hex-topology blocks, each a map [0,1]^3 -> R^3 sampled on a tensor grid.
+//
+// Core (inside T(n+1), around the base surface M; polycube-like): per
+// rectangle R of M's layout a block above M and one below, each ruled from
+// M(s, t) (r = 0) to the point where the ray from M along D+ (D-) reaches
+// w = w0; per boundary segment of M a crest block whose cross-section is the
+// quadrilateral P0 (on M's boundary), P3 = the top ray's end, P2 = the end of
+// the ray along M's outward binormal, P1 = the bottom ray's end. D+- lean
+// outwards near M's boundary so that S+ and S- leave it at the angle theta
+// from M's plane: the three blocks meet at M's boundary at 180 - theta,
+// 180 - theta and 2 theta degrees (interior extraordinary edges, valence 3).
+//
+// Shell (between T1 and T(n+1)): every outer face of the core (the top and
+// bottom faces of the rectangle blocks, the two outer faces of each crest
+// block) is carried out to T1 along streamlines of -grad w, one block per
+// material layer: layer k spans w in [(k - 1)/n, k/n] (the innermost one up
+// to the core), so layer faces lie on the Ti exactly. S+, S- and the corner
+// surfaces are the streamline surfaces from the core's outer edges: sampled
+// exactly, never a staircase of tets.
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "igaprep/param/base_layout.h"
+#include "igaprep/param/decomposition_mesh.h"
+#include "igaprep/param/w_field.h"
+
+namespace igaprep::param {
+
+struct VolumeParamOptions {
+  int strategy = 2;  // section 6: 2 (default) or 1
+  double theta = 0.78539816339744831;  // pi/4: angle of S+ and S- from M's plane at its boundary
+  double w0 = -1.0;     // iso-value of T(n+1) in ((n - 1)/n, 1); < 0: midway
+  double blend = 0.25;  // the rays lean out within this fraction of min(W, H) of M's boundary (in (u, v))
+  double ray_step = 2e-3;  // ray march step, fraction of H's bounding-box diagonal
+};
+
+enum class BlockKind { CoreTop, CoreBottom, Crest, Shell };
+const char* to_string(BlockKind kind);
+
+struct SampledBlock {
+  BlockKind kind = BlockKind::Shell;
+  int material = 0;  // 0 = between T1 and T2, ..., n - 1 = inside Tn
+  int source = 0;    // rectangle (core top/bottom), crest segment (crest) or core face (shell)
+  int layer = 0;     // shell: 1..n counted from T1; core: 0
+  Eigen::MatrixXd samples;  // m^3 x 3 on params^3, first direction fastest
+  // Per side (G+Smo order u0, u1, v0, v1, w0, w1): the surface label it lies
+  // on when it is a boundary of the model (0 = T1), else -1 (an interface).
+  std::array<int, 6> side_label{{-1, -1, -1, -1, -1, -1}};
+  bool mirrored = false;  // the first direction was reversed for a positive orientation
+};
+
+struct VolumeParam {
+  std::vector<double> params;  // sample parameters in each direction (ascending, 0 and 1 included)
+  std::vector<SampledBlock> blocks;
+  double w0 = 0.0;
+  int rectangles = 0, crests = 0, core_faces = 0, layers = 0;
+  int streamlines = 0;     // traced from the core's outer faces to T1
+  int folded_cells = 0;    // sample-grid cells with a non-positive corner volume (should be 0)
+};
+
+// Inputs: H and its w-field, M's layout (whose sheet must be M as embedded in
+// H), the sample parameters (>= 3, ascending, from 0 to 1), options. Output:
+// the blocks. Throws bad_input for an option out of range and check_failed
+// when a ray or streamline fails (with the point).
+VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, const BaseLayout& layout,
+                               const std::vector<double>& params, const VolumeParamOptions& options = {});
+
+}  // namespace igaprep::param

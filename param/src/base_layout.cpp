@@ -1,0 +1,61 @@
+#include "igaprep/param/base_layout.h"
+
+#include <algorithm>
+
+#include "igaprep/core/error.h"
+
+namespace igaprep::param {
+
+bool inside_domain(const RectilinearDomain& domain, const Eigen::Vector2d& p) {
+  if (!(p.x() > 0.0 && p.x() < domain.width && p.y() > 0.0 && p.y() < domain.height)) return false;
+  for (const auto& h : domain.holes)
+    if (p.x() >= h(0) && p.x() <= h(2) && p.y() >= h(1) && p.y() <= h(3)) return false;
+  return true;
+}
+
+namespace {
+
+// The four sides of a box (umin, vmin, umax, vmax) in DomainSide order, each
+// from its start to its end corner counter-clockwise, with the normal pointing
+// out of the box.
+std::array<DomainEdge, 4> box_sides(const Eigen::Vector4d& r) {
+  const Eigen::Vector2d c00(r(0), r(1)), c10(r(2), r(1)), c11(r(2), r(3)), c01(r(0), r(3));
+  return {{{c00, c10, Eigen::Vector2d(0, -1)},
+           {c10, c11, Eigen::Vector2d(1, 0)},
+           {c01, c11, Eigen::Vector2d(0, 1)},
+           {c00, c01, Eigen::Vector2d(-1, 0)}}};
+}
+
+}  // namespace
+
+BaseLayout base_layout(const InsetBase& base) {
+  BaseLayout L;
+  L.sheet = base.mesh;
+  L.uv = base.uv;
+  L.domain = base.domain;
+  L.rectangles = domain_rectangles(L.domain);
+  const RectilinearDomain& D = L.domain;
+
+  // The domain's own sides: outward of the outer rectangle, into each hole.
+  for (const auto& e : box_sides(Eigen::Vector4d(0.0, 0.0, D.width, D.height))) L.domain_edges.push_back(e);
+  for (const auto& h : D.holes)
+    for (auto e : box_sides(h)) {
+      e.outward = -e.outward;
+      L.domain_edges.push_back(e);
+    }
+
+  // A rectangle side is on M's boundary when just beyond its middle lies outside the domain.
+  const double eps = 1e-6 * std::min(D.width, D.height);
+  for (std::size_t r = 0; r < L.rectangles.size(); ++r) {
+    const auto sides = box_sides(L.rectangles[r]);
+    for (int s = 0; s < 4; ++s) {
+      const Eigen::Vector2d probe = 0.5 * (sides[s].a + sides[s].b) + eps * sides[s].outward;
+      if (inside_domain(D, probe)) continue;
+      L.crests.push_back({static_cast<int>(r), s, sides[s].a, sides[s].b});
+    }
+  }
+  if (L.crests.empty()) throw internal_error("base layout: no rectangle side lies on M's boundary");
+  return L;
+}
+
+}  // namespace igaprep::param

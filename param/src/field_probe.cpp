@@ -1,0 +1,99 @@
+#include "igaprep/param/field_probe.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include <Eigen/Dense>
+
+#include "igaprep/core/error.h"
+
+namespace igaprep::param {
+
+bool FieldProbe::coordinates(int c, const Eigen::Vector3d& p, Eigen::Vector4d& b) const {
+  Eigen::Matrix3d E;
+  const Eigen::Vector3d o = V_.row(T_(c, 0)).transpose();
+  for (int k = 0; k < 3; ++k) E.col(k) = V_.row(T_(c, k + 1)).transpose() - o;
+  const Eigen::FullPivLU<Eigen::Matrix3d> lu(E);
+  if (!lu.isInvertible()) return false;
+  const Eigen::Vector3d x = lu.solve(p - o);
+  b << 1.0 - x.sum(), x;
+  return true;
+}
+
+int FieldProbe::locate(const Eigen::Vector3d& p, int* hint, Eigen::Vector4d* bary) const {
+  const int m = static_cast<int>(T_.rows());
+  int c = (hint && *hint >= 0 && *hint < m) ? *hint : 0;
+  Eigen::Vector4d b;
+  for (int it = 0; it < 10000; ++it) {
+    if (!coordinates(c, p, b)) break;
+    int k;
+    if (b.minCoeff(&k) >= -1e-12) {
+      if (hint) *hint = c;
+      if (bary) *bary = b.cwiseMax(0.0) / b.cwiseMax(0.0).sum();
+      return c;
+    }
+    const int next = topo_.neighbor(c, k);
+    if (next < 0) return -1;  // p lies beyond a boundary facet
+    c = next;
+  }
+  // The walk cycled (a flat tet or a non-Delaunay mesh): scan.
+  int best = -1;
+  double best_min = -1e-9;
+  for (int x = 0; x < m; ++x)
+    if (coordinates(x, p, b) && b.minCoeff() > best_min) best_min = b.minCoeff(), best = x;
+  if (best >= 0) {
+    coordinates(best, p, b);
+    if (hint) *hint = best;
+    if (bary) *bary = b.cwiseMax(0.0) / b.cwiseMax(0.0).sum();
+  }
+  return best;
+}
+
+double FieldProbe::value(const Eigen::Vector3d& p, int* hint) const {
+  Eigen::Vector4d b;
+  const int c = locate(p, hint, &b);
+  if (c < 0) return std::numeric_limits<double>::quiet_NaN();
+  double s = 0.0;
+  for (int k = 0; k < 4; ++k) s += b(k) * u_(T_(c, k));
+  return s;
+}
+
+bool FieldProbe::gradient(const Eigen::Vector3d& p, int* hint, Eigen::Vector3d* g) const {
+  Eigen::Vector4d b;
+  const int c = locate(p, hint, &b);
+  if (c < 0) return false;
+  g->setZero();
+  for (int k = 0; k < 4; ++k) *g += b(k) * grad_.row(T_(c, k)).transpose();
+  return true;
+}
+
+Eigen::Vector3d FieldProbe::ray_to_level(const Eigen::Vector3d& start, const Eigen::Vector3d& direction, double level,
+                                         double step, double max_length) const {
+  int hint = -1;
+  auto fail = [&](const char* why) {
+    std::ostringstream m;
+    m << "ray to the level " << level << " from (" << start.transpose() << ") along (" << direction.transpose()
+      << "): " << why;
+    return check_failed(m.str());
+  };
+  double lo = 0.0;
+  const double u0 = value(start, &hint);
+  if (!(u0 > level)) throw fail("the start point is not above the level");
+  for (double t = step; t <= max_length + step; t += step) {
+    const double u = value(start + t * direction, &hint);
+    if (std::isnan(u)) throw fail("the ray leaves the mesh first");
+    if (u <= level) {
+      double hi = t;
+      for (int it = 0; it < 60 && hi - lo > 1e-12 * step; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (value(start + mid * direction, &hint) > level ? lo : hi) = mid;
+      }
+      return start + hi * direction;
+    }
+    lo = t;
+  }
+  throw fail("the level is not reached within the maximum length");
+}
+
+}  // namespace igaprep::param

@@ -1,0 +1,139 @@
+#include "igaprep/param/inset_base.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <utility>
+
+#include "igaprep/core/error.h"
+#include "igaprep/param/base_layout.h"
+#include "igaprep/param/sheet_topology.h"
+
+namespace igaprep::param {
+
+int split_sheet_along_line(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, int axis, double c, double snap) {
+  for (Eigen::Index v = 0; v < uv.rows(); ++v)
+    if (std::abs(uv(v, axis) - c) < snap) uv(v, axis) = c;
+  std::vector<Eigen::Vector3d> P;
+  std::vector<Eigen::Vector2d> Q;
+  for (Eigen::Index v = 0; v < uv.rows(); ++v) P.push_back(sheet.V.row(v)), Q.push_back(uv.row(v));
+  std::map<std::pair<int, int>, int> cut;  // edge -> new vertex
+  auto side = [&](int v) { return Q[static_cast<std::size_t>(v)](axis) - c; };
+  auto crossing = [&](int a, int b) {
+    const auto key = std::minmax(a, b);
+    const auto it = cut.find(key);
+    if (it != cut.end()) return it->second;
+    const double t = side(key.first) / (side(key.first) - side(key.second));
+    P.push_back((1.0 - t) * P[key.first] + t * P[key.second]);
+    Eigen::Vector2d q = (1.0 - t) * Q[key.first] + t * Q[key.second];
+    q(axis) = c;
+    Q.push_back(q);
+    const int id = static_cast<int>(P.size()) - 1;
+    cut.emplace(key, id);
+    return id;
+  };
+  std::vector<Eigen::Vector3i> faces;
+  auto emit = [&](const std::vector<int>& poly) {
+    for (std::size_t k = 1; k + 1 < poly.size(); ++k) faces.emplace_back(poly[0], poly[k], poly[k + 1]);
+  };
+  for (Eigen::Index f = 0; f < sheet.F.rows(); ++f) {
+    std::vector<int> pos, neg;
+    for (int k = 0; k < 3; ++k) {
+      const int a = sheet.F(f, k), b = sheet.F(f, (k + 1) % 3);
+      const double sa = side(a), sb = side(b);
+      if (sa >= 0.0) pos.push_back(a);
+      if (sa <= 0.0) neg.push_back(a);
+      if ((sa > 0.0 && sb < 0.0) || (sa < 0.0 && sb > 0.0)) {
+        const int x = crossing(a, b);
+        pos.push_back(x);
+        neg.push_back(x);
+      }
+    }
+    if (pos.size() == 3 && neg.size() < 3) emit(pos);
+    else if (neg.size() == 3 && pos.size() < 3) emit(neg);
+    else {
+      if (pos.size() >= 3) emit(pos);
+      if (neg.size() >= 3) emit(neg);
+    }
+  }
+  sheet.V.resize(static_cast<Eigen::Index>(P.size()), 3);
+  uv.resize(static_cast<Eigen::Index>(Q.size()), 2);
+  for (std::size_t v = 0; v < P.size(); ++v) {
+    sheet.V.row(static_cast<Eigen::Index>(v)) = P[v].transpose();
+    uv.row(static_cast<Eigen::Index>(v)) = Q[v].transpose();
+  }
+  sheet.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
+  for (std::size_t f = 0; f < faces.size(); ++f) sheet.F.row(static_cast<Eigen::Index>(f)) = faces[f].transpose();
+  return static_cast<int>(cut.size());
+}
+
+InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double m0) {
+  if (!(m0 > 0.0 && m0 < 1.0)) throw bad_input("inset base surface: m0 = " + std::to_string(m0) + " is outside (0, 1)");
+  const RectilinearDomain& D = polycube.domain;
+  double band = std::min(D.width, D.height);
+  for (const auto& h : D.holes) {
+    band = std::min({band, h(0), h(1), D.width - h(2), D.height - h(3)});
+    for (const auto& g : D.holes) {
+      if (&g == &h) continue;
+      const double gu = std::max(g(0) - h(2), h(0) - g(2)), gv = std::max(g(1) - h(3), h(1) - g(3));
+      if (std::max(gu, gv) > 0.0) band = std::min(band, std::max(gu, gv));
+    }
+  }
+  const double d = 0.5 * m0 * band;
+
+  InsetBase out;
+  out.inset = d;
+  out.mesh = sheet;
+  out.uv = polycube.uv;
+  // Mean (u, v) edge length sets the snap distance.
+  double mean_edge = 0.0;
+  for (Eigen::Index f = 0; f < sheet.F.rows(); ++f)
+    mean_edge += (polycube.uv.row(sheet.F(f, 0)) - polycube.uv.row(sheet.F(f, 1))).norm();
+  mean_edge /= std::max<Eigen::Index>(1, sheet.F.rows());
+  const double snap = 0.02 * mean_edge;
+  std::vector<std::pair<int, double>> lines{{0, d}, {0, D.width - d}, {1, d}, {1, D.height - d}};
+  for (const auto& h : D.holes) {
+    lines.push_back({0, h(0) - d});
+    lines.push_back({0, h(2) + d});
+    lines.push_back({1, h(1) - d});
+    lines.push_back({1, h(3) + d});
+  }
+  for (const auto& [axis, c] : lines) split_sheet_along_line(out.mesh, out.uv, axis, c, snap);
+
+  // The inset domain, shifted so that its outer rectangle starts at (0, 0).
+  out.domain.width = D.width - 2.0 * d;
+  out.domain.height = D.height - 2.0 * d;
+  out.domain.hole_loop = D.hole_loop;
+  for (const auto& h : D.holes) out.domain.holes.emplace_back(h(0) - 2.0 * d, h(1) - 2.0 * d, h(2), h(3));
+  for (Eigen::Index v = 0; v < out.uv.rows(); ++v) out.uv.row(v) -= Eigen::RowVector2d(d, d);
+
+  // Keep the triangles inside, drop unused vertices.
+  std::vector<int> keep;
+  for (Eigen::Index f = 0; f < out.mesh.F.rows(); ++f) {
+    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+    for (int k = 0; k < 3; ++k) centre += out.uv.row(out.mesh.F(f, k)).transpose() / 3.0;
+    if (inside_domain(out.domain, centre)) keep.push_back(static_cast<int>(f));
+  }
+  std::vector<int> index(static_cast<std::size_t>(out.mesh.V.rows()), -1);
+  int count = 0;
+  Eigen::MatrixXi F(static_cast<Eigen::Index>(keep.size()), 3);
+  for (std::size_t i = 0; i < keep.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      int& id = index[static_cast<std::size_t>(out.mesh.F(keep[i], k))];
+      if (id < 0) id = count++;
+      F(static_cast<Eigen::Index>(i), k) = id;
+    }
+  Eigen::MatrixXd V(count, 3), uv(count, 2);
+  for (std::size_t v = 0; v < index.size(); ++v)
+    if (index[v] >= 0) V.row(index[v]) = out.mesh.V.row(static_cast<Eigen::Index>(v)), uv.row(index[v]) = out.uv.row(static_cast<Eigen::Index>(v));
+  out.mesh = {V, F};
+  out.uv = uv;
+  const SheetTopology topo = analyze_sheet(F, V.rows());
+  const std::string problem =
+      describe_sheet_problem(topo, static_cast<int>(D.holes.size()) + 1, "the inset base surface (d = " + std::to_string(d) + ")");
+  if (!problem.empty()) throw check_failed(problem);
+  return out;
+}
+
+}  // namespace igaprep::param

@@ -1,0 +1,92 @@
+#include "igaprep/param/sheet_sampler.h"
+
+#include <Eigen/Geometry>
+
+#include <vector>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include "igaprep/core/error.h"
+
+namespace igaprep::param {
+
+namespace {
+using K = CGAL::Simple_cartesian<double>;
+using Triangle = K::Triangle_3;
+using TriIterator = std::vector<Triangle>::const_iterator;
+using Primitive = CGAL::AABB_triangle_primitive<K, TriIterator>;
+}  // namespace
+
+// The (u, v) triangles as flat 3D triangles (z = 0), so CGAL's AABB tree
+// answers "nearest triangle" queries.
+struct SheetSampler::Tree {
+  std::vector<Triangle> triangles;
+  CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree;
+};
+
+SheetSampler::SheetSampler(const mesh::TriMesh& sheet, const Eigen::MatrixXd& uv)
+    : sheet_(sheet), uv_(uv), tree_(std::make_unique<Tree>()) {
+  const auto& V = sheet.V;
+  const auto& F = sheet.F;
+  if (uv.rows() != V.rows() || uv.cols() != 2 || F.rows() == 0)
+    throw bad_input("sheet sampler: need a non-empty sheet with one (u, v) per vertex");
+  normal_ = Eigen::MatrixXd::Zero(V.rows(), 3);
+  du_ = Eigen::MatrixXd::Zero(V.rows(), 3);
+  dv_ = Eigen::MatrixXd::Zero(V.rows(), 3);
+  Eigen::VectorXd weight = Eigen::VectorXd::Zero(V.rows());
+  tree_->triangles.reserve(static_cast<std::size_t>(F.rows()));
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    const int a = F(f, 0), b = F(f, 1), c = F(f, 2);
+    const Eigen::Vector3d e1 = V.row(b) - V.row(a), e2 = V.row(c) - V.row(a);
+    const Eigen::Vector2d t1 = uv.row(b) - uv.row(a), t2 = uv.row(c) - uv.row(a);
+    const double det = t1.x() * t2.y() - t1.y() * t2.x();
+    if (!(det > 0.0)) throw bad_input("sheet sampler: (u, v) triangle " + std::to_string(f) + " is not positively oriented");
+    // [e1 e2] = [Xu Xv] [t1 t2]  =>  [Xu Xv] = [e1 e2] [t1 t2]^-1
+    const Eigen::Vector3d Xu = (e1 * t2.y() - e2 * t1.y()) / det;
+    const Eigen::Vector3d Xv = (-e1 * t2.x() + e2 * t1.x()) / det;
+    const Eigen::Vector3d n = e1.cross(e2);  // length = 2 x area: area-weighted
+    const double area = 0.5 * n.norm();
+    for (int v : {a, b, c}) {
+      normal_.row(v) += n.transpose();
+      du_.row(v) += area * Xu.transpose();
+      dv_.row(v) += area * Xv.transpose();
+      weight(v) += area;
+    }
+    tree_->triangles.emplace_back(K::Point_3(uv(a, 0), uv(a, 1), 0.0), K::Point_3(uv(b, 0), uv(b, 1), 0.0),
+                                  K::Point_3(uv(c, 0), uv(c, 1), 0.0));
+  }
+  for (Eigen::Index v = 0; v < V.rows(); ++v) {
+    if (weight(v) > 0.0) {
+      normal_.row(v).normalize();
+      du_.row(v) /= weight(v);
+      dv_.row(v) /= weight(v);
+    }
+  }
+  tree_->tree.insert(tree_->triangles.cbegin(), tree_->triangles.cend());
+  tree_->tree.accelerate_distance_queries();
+}
+
+SheetSampler::~SheetSampler() = default;
+
+SheetPoint SheetSampler::at(const Eigen::Vector2d& q) const {
+  const auto hit = tree_->tree.closest_point_and_primitive(K::Point_3(q.x(), q.y(), 0.0));
+  const int f = static_cast<int>(hit.second - tree_->triangles.cbegin());
+  const Eigen::Vector2d p(hit.first.x(), hit.first.y());
+  const int a = sheet_.F(f, 0), b = sheet_.F(f, 1), c = sheet_.F(f, 2);
+  const Eigen::Vector2d t1 = uv_.row(b) - uv_.row(a), t2 = uv_.row(c) - uv_.row(a), r = p - uv_.row(a).transpose();
+  const double det = t1.x() * t2.y() - t1.y() * t2.x();
+  const double lb = (r.x() * t2.y() - r.y() * t2.x()) / det, lc = (t1.x() * r.y() - t1.y() * r.x()) / det;
+  const double la = 1.0 - lb - lc;
+  SheetPoint s;
+  s.triangle = f;
+  s.position = la * sheet_.V.row(a) + lb * sheet_.V.row(b) + lc * sheet_.V.row(c);
+  s.normal = (la * normal_.row(a) + lb * normal_.row(b) + lc * normal_.row(c)).normalized();
+  s.du = la * du_.row(a) + lb * du_.row(b) + lc * du_.row(c);
+  s.dv = la * dv_.row(a) + lb * dv_.row(b) + lc * dv_.row(c);
+  return s;
+}
+
+}  // namespace igaprep::param

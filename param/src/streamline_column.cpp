@@ -1,0 +1,77 @@
+#include "igaprep/param/streamline_column.h"
+
+#include <algorithm>
+#include <sstream>
+#include <vector>
+
+#include "igaprep/core/error.h"
+
+namespace igaprep::param {
+
+Eigen::Vector3d StreamlineColumn::at_level(double level) const {
+  const Eigen::Index k = w.size();
+  if (level >= w(0)) return path.row(0).transpose();
+  for (Eigen::Index j = 0; j + 1 < k; ++j) {
+    if (w(j + 1) <= level) {
+      const double dw = w(j) - w(j + 1);
+      const double t = dw > 0.0 ? (w(j) - level) / dw : 1.0;
+      return ((1.0 - t) * path.row(j) + t * path.row(j + 1)).transpose();
+    }
+  }
+  return path.row(k - 1).transpose();
+}
+
+StreamlineColumn trace_column(const FieldProbe& probe, const Eigen::Vector3d& start, double step, int max_steps) {
+  auto fail = [&](const std::string& why) {
+    std::ostringstream m;
+    m << "streamline from (" << start.transpose() << "): " << why;
+    return check_failed(m.str());
+  };
+  int hint = -1;
+  // Unit descent direction at x; false outside H.
+  auto direction = [&](const Eigen::Vector3d& x, Eigen::Vector3d* d) {
+    Eigen::Vector3d g;
+    if (!probe.gradient(x, &hint, &g)) return false;
+    const double len = g.norm();
+    if (!(len > 0.0)) throw fail("the gradient of w vanishes at (" + std::to_string(x.x()) + ", " +
+                                 std::to_string(x.y()) + ", " + std::to_string(x.z()) + ")");
+    *d = -g / len;
+    return true;
+  };
+  std::vector<Eigen::Vector3d> pts{start};
+  std::vector<double> ws{probe.value(start, &hint)};
+  if (std::isnan(ws[0])) throw fail("the start point lies outside H");
+  Eigen::Vector3d x = start;
+  for (int it = 0; it < max_steps; ++it) {
+    Eigen::Vector3d d1, d2, next;
+    bool inside = direction(x, &d1);
+    if (inside) inside = direction(x + 0.5 * step * d1, &d2);
+    next = x + step * (inside ? d2 : d1);
+    if (inside && probe.locate(next, &hint, nullptr) >= 0) {
+      x = next;
+      pts.push_back(x);
+      ws.push_back(probe.value(x, &hint));
+      continue;
+    }
+    // The step leaves H: bisect for the crossing of the outer boundary (T1).
+    double lo = 0.0, hi = 1.0;
+    for (int k = 0; k < 50; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (probe.locate(x + mid * (next - x), &hint, nullptr) >= 0 ? lo : hi) = mid;
+    }
+    const Eigen::Vector3d end = x + lo * (next - x);
+    pts.push_back(end);
+    ws.push_back(probe.value(end, &hint));
+    StreamlineColumn c;
+    c.path.resize(static_cast<Eigen::Index>(pts.size()), 3);
+    c.w.resize(static_cast<Eigen::Index>(pts.size()));
+    for (std::size_t j = 0; j < pts.size(); ++j) {
+      c.path.row(static_cast<Eigen::Index>(j)) = pts[j].transpose();
+      c.w(static_cast<Eigen::Index>(j)) = j == 0 ? ws[j] : std::min(ws[j], c.w(static_cast<Eigen::Index>(j) - 1));
+    }
+    return c;
+  }
+  throw fail("no exit through T1 within " + std::to_string(max_steps) + " steps");
+}
+
+}  // namespace igaprep::param

@@ -1,0 +1,244 @@
+#include "igaprep/param/volume_param.h"
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "igaprep/core/error.h"
+#include "igaprep/core/progress.h"
+#include "igaprep/param/field_probe.h"
+#include "igaprep/param/gradient.h"
+#include "igaprep/param/sheet_sampler.h"
+#include "igaprep/param/streamline_column.h"
+#include "igaprep/param/tet_topology.h"
+
+namespace igaprep::param {
+
+const char* to_string(BlockKind kind) {
+  switch (kind) {
+    case BlockKind::CoreTop: return "core top";
+    case BlockKind::CoreBottom: return "core bottom";
+    case BlockKind::Crest: return "crest";
+    case BlockKind::Shell: return "shell";
+  }
+  return "?";
+}
+
+namespace {
+
+using Grid2 = std::vector<Eigen::Vector3d>;  // m x m, first index fastest
+
+// (1 - t) p + t q: exact at t = 0 and t = 1, so blocks that share a face
+// compute its points bit for bit alike.
+Eigen::Vector3d lerp(const Eigen::Vector3d& p, const Eigen::Vector3d& q, double t) { return (1.0 - t) * p + t * q; }
+
+double segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d ab = b - a;
+  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+  return (p - (a + t * ab)).norm();
+}
+
+// Reverses the first direction when the grid's finite-difference Jacobian at
+// its centre is negative; counts the cells whose corner tets are not positive.
+void orient_block(SampledBlock& b, int m, int& folded) {
+  auto at = [&](int i, int j, int k) -> Eigen::Vector3d { return b.samples.row(i + m * (j + m * k)).transpose(); };
+  const int c = m / 2;
+  Eigen::Matrix3d J;
+  J.col(0) = at(c + 1, c, c) - at(c - 1, c, c);
+  J.col(1) = at(c, c + 1, c) - at(c, c - 1, c);
+  J.col(2) = at(c, c, c + 1) - at(c, c, c - 1);
+  if (J.determinant() < 0.0) {
+    Eigen::MatrixXd s = b.samples;
+    for (int k = 0; k < m; ++k)
+      for (int j = 0; j < m; ++j)
+        for (int i = 0; i < m; ++i) s.row(i + m * (j + m * k)) = b.samples.row((m - 1 - i) + m * (j + m * k));
+    b.samples = s;
+    b.mirrored = true;
+    std::swap(b.side_label[0], b.side_label[1]);
+  }
+  for (int k = 0; k + 1 < m; ++k)
+    for (int j = 0; j + 1 < m; ++j)
+      for (int i = 0; i + 1 < m; ++i) {
+        const Eigen::Vector3d o = at(i, j, k);
+        Eigen::Matrix3d E;
+        E.col(0) = at(i + 1, j, k) - o;
+        E.col(1) = at(i, j + 1, k) - o;
+        E.col(2) = at(i, j, k + 1) - o;
+        if (!(E.determinant() > 0.0)) ++folded;
+      }
+}
+
+}  // namespace
+
+VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, const BaseLayout& layout,
+                               const std::vector<double>& params, const VolumeParamOptions& options) {
+  const int n = H.num_surfaces;
+  const int m = static_cast<int>(params.size());
+  if (m < 3 || params.front() != 0.0 || params.back() != 1.0)
+    throw bad_input("volume parameterization: need at least 3 sample parameters from 0 to 1");
+  if (!(options.theta > 0.05 && options.theta < 1.5))
+    throw bad_input("volume parameterization: theta = " + std::to_string(options.theta) +
+                    " is outside (0.05, 1.5) radians");
+  VolumeParam out;
+  out.params = params;
+  out.layers = n;
+  const double inner = static_cast<double>(n - 1) / n;
+  out.w0 = options.w0 < 0.0 ? 0.5 * (inner + 1.0) : options.w0;
+  if (!(out.w0 > inner && out.w0 < 1.0))
+    throw bad_input("volume parameterization: w0 = " + std::to_string(out.w0) + " must lie in (" +
+                    std::to_string(inner) + ", 1): T(n+1) between Tn and M");
+  if (w.w.size() != H.tets.V.rows()) throw bad_input("volume parameterization: the w-field belongs to another mesh");
+
+  const Eigen::MatrixXd& V = H.tets.V;
+  const Eigen::MatrixXi& T = H.tets.T;
+  const TetTopology topo = build_tet_topology(T, V.rows());
+  const Eigen::MatrixXd grad = vertex_gradients(V, T, w.w);
+  const FieldProbe probe(V, T, topo, w.w, grad);
+  const double diag = (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm();
+  const double step = options.ray_step * diag;
+  const RectilinearDomain& D = layout.domain;
+  const double kappa = options.blend * std::min(D.width, D.height);
+  const double cot_theta = 1.0 / std::tan(options.theta);
+  const SheetSampler sheet(layout.sheet, layout.uv);
+
+  // The outward lean at (u, v): M's outward binormals of the domain sides
+  // within kappa, weighted by (1 - d/kappa)^2 (1 on the boundary).
+  struct Frame {
+    Eigen::Vector3d position, normal, lean;
+  };
+  auto frame = [&](const Eigen::Vector2d& uv) {
+    const SheetPoint sp = sheet.at(uv);
+    Frame f{sp.position, sp.normal, Eigen::Vector3d::Zero()};
+    for (const DomainEdge& e : layout.domain_edges) {
+      const double d = segment_distance(uv, e.a, e.b);
+      if (d >= kappa) continue;
+      Eigen::Vector3d b = e.outward.x() * sp.du + e.outward.y() * sp.dv;
+      b -= b.dot(f.normal) * f.normal;
+      if (b.norm() == 0.0) continue;
+      const double beta = (1.0 - d / kappa) * (1.0 - d / kappa);
+      f.lean += beta * b.normalized();
+    }
+    return f;
+  };
+  auto ray = [&](const Frame& f, double side) {
+    const Eigen::Vector3d dir = (side * f.normal + cot_theta * f.lean).normalized();
+    return probe.ray_to_level(f.position, dir, out.w0, step, 0.5 * diag);
+  };
+
+  // Per rectangle: M, the top and the bottom of the core on an m x m grid.
+  struct RectGrid {
+    Grid2 base, top, bottom;
+    std::vector<Eigen::Vector2d> uv;
+  };
+  std::vector<RectGrid> rect(layout.rectangles.size());
+  for (std::size_t r = 0; r < layout.rectangles.size(); ++r) {
+    const Eigen::Vector4d& R = layout.rectangles[r];
+    RectGrid& g = rect[r];
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i) {
+        const Eigen::Vector2d uv((1.0 - params[i]) * R(0) + params[i] * R(2), (1.0 - params[j]) * R(1) + params[j] * R(3));
+        const Frame f = frame(uv);
+        g.uv.push_back(uv);
+        g.base.push_back(f.position);
+        g.top.push_back(ray(f, 1.0));
+        g.bottom.push_back(ray(f, -1.0));
+      }
+  }
+  // Grid index of position k along side s of a rectangle (box_sides order).
+  auto side_index = [m](int s, int k) {
+    switch (s) {
+      case 0: return k;                      // bottom: j = 0
+      case 1: return (m - 1) + m * k;        // right: i = m - 1
+      case 2: return k + m * (m - 1);        // top: j = m - 1
+      default: return m * k;                 // left: i = 0
+    }
+  };
+
+  std::vector<Grid2> core_faces;  // outer faces of the core, each m x m
+  auto add_block = [&](BlockKind kind, int source, int layer, int material, Eigen::MatrixXd samples, int t1_side) {
+    SampledBlock b;
+    b.kind = kind;
+    b.source = source;
+    b.layer = layer;
+    b.material = material;
+    b.samples = std::move(samples);
+    if (t1_side >= 0) b.side_label[static_cast<std::size_t>(t1_side)] = 0;
+    orient_block(b, m, out.folded_cells);
+    out.blocks.push_back(std::move(b));
+  };
+  const int core_material = n - 1;
+  for (std::size_t r = 0; r < rect.size(); ++r) {
+    for (const bool top : {true, false}) {
+      Eigen::MatrixXd s(m * m * m, 3);
+      const Grid2& lid = top ? rect[r].top : rect[r].bottom;
+      for (int k = 0; k < m; ++k)
+        for (int q = 0; q < m * m; ++q) s.row(q + m * m * k) = lerp(rect[r].base[q], lid[q], params[k]).transpose();
+      add_block(top ? BlockKind::CoreTop : BlockKind::CoreBottom, static_cast<int>(r), 0, core_material, std::move(s), -1);
+      core_faces.push_back(lid);
+    }
+  }
+  for (std::size_t c = 0; c < layout.crests.size(); ++c) {
+    const CrestSegment& seg = layout.crests[c];
+    const RectGrid& g = rect[static_cast<std::size_t>(seg.rectangle)];
+    Grid2 P0(m), P1(m), P2(m), P3(m);
+    for (int k = 0; k < m; ++k) {
+      const int q = side_index(seg.side, k);
+      P0[k] = g.base[q];
+      P3[k] = g.top[q];
+      P1[k] = g.bottom[q];
+      const Frame f = frame(g.uv[q]);
+      if (f.lean.norm() == 0.0) throw internal_error("volume parameterization: no binormal on M's boundary");
+      P2[k] = probe.ray_to_level(f.position, f.lean.normalized(), out.w0, step, 0.5 * diag);
+    }
+    Eigen::MatrixXd s(m * m * m, 3);
+    Grid2 upper(m * m), lower(m * m);
+    for (int b = 0; b < m; ++b)
+      for (int a = 0; a < m; ++a)
+        for (int k = 0; k < m; ++k)
+          s.row(k + m * (a + m * b)) =
+              ((1.0 - params[b]) * lerp(P0[k], P3[k], params[a]) + params[b] * lerp(P1[k], P2[k], params[a])).transpose();
+    for (int j = 0; j < m; ++j)
+      for (int k = 0; k < m; ++k) {
+        upper[k + m * j] = lerp(P3[k], P2[k], params[j]);  // the a = 1 face, (tau, b)
+        lower[k + m * j] = lerp(P1[k], P2[k], params[j]);  // the b = 1 face, (tau, a)
+      }
+    add_block(BlockKind::Crest, static_cast<int>(c), 0, core_material, std::move(s), -1);
+    core_faces.push_back(upper);
+    core_faces.push_back(lower);
+  }
+  out.rectangles = static_cast<int>(layout.rectangles.size());
+  out.crests = static_cast<int>(layout.crests.size());
+  out.core_faces = static_cast<int>(core_faces.size());
+
+  // Shell: streamlines from every sample of every outer core face, cut at the layers' w-levels.
+  Progress progress("streamlines", core_faces.size());
+  for (std::size_t f = 0; f < core_faces.size(); ++f) {
+    std::vector<StreamlineColumn> cols;
+    cols.reserve(static_cast<std::size_t>(m * m));
+    for (const Eigen::Vector3d& y : core_faces[f]) cols.push_back(trace_column(probe, y, step));
+    out.streamlines += m * m;
+    for (int layer = 1; layer <= n; ++layer) {
+      const double lo = static_cast<double>(layer - 1) / n;
+      Eigen::MatrixXd s(m * m * m, 3);
+      for (int q = 0; q < m * m; ++q) {
+        const StreamlineColumn& col = cols[static_cast<std::size_t>(q)];
+        const double hi = layer == n ? col.w(0) : static_cast<double>(layer) / n;
+        for (int k = 0; k < m; ++k) {
+          Eigen::Vector3d x;
+          if (k == 0) x = col.at_level(lo);
+          else if (k == m - 1) x = layer == n ? core_faces[f][q] : col.at_level(hi);
+          else x = col.at_level(lo + params[k] * (hi - lo));
+          s.row(q + m * m * k) = x.transpose();
+        }
+      }
+      add_block(BlockKind::Shell, static_cast<int>(f), layer, layer - 1, std::move(s), layer == 1 ? 4 : -1);
+    }
+    progress.update(f + 1);
+  }
+  progress.finish();
+  return out;
+}
+
+}  // namespace igaprep::param

@@ -1,0 +1,142 @@
+#include "igaprep/spline/find_interfaces.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <tuple>
+#include <vector>
+
+#include "igaprep/core/error.h"
+#include "igaprep/spline/curve_surface.h"
+#include "igaprep/spline/multipatch_topology.h"
+
+namespace igaprep::spline {
+
+namespace {
+
+struct PointRef {
+  int patch, index;
+};
+
+int find_root(std::vector<int>& parent, int i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+}  // namespace
+
+int stitch_control_points(MultiPatch& mp, double tol, double* max_move) {
+  if (!(tol > 0.0)) throw bad_input("stitch_control_points: tolerance must be positive");
+  // Side control points of every patch, each once.
+  std::vector<PointRef> refs;
+  for (int p = 0; p < static_cast<int>(mp.patches.size()); ++p) {
+    std::vector<int> idx;
+    for (int s = 1; s <= 6; ++s) {
+      const auto side = side_control_points(mp.patches[p], s);
+      idx.insert(idx.end(), side.begin(), side.end());
+    }
+    std::sort(idx.begin(), idx.end());
+    idx.erase(std::unique(idx.begin(), idx.end()), idx.end());
+    for (int i : idx) refs.push_back({p, i});
+  }
+  auto point = [&](const PointRef& r) -> Eigen::Vector3d {
+    return mp.patches[r.patch].control_points.row(r.index).transpose();
+  };
+  // Hash grid with cells of size tol: close points are in neighbouring cells.
+  using Key = std::tuple<long long, long long, long long>;
+  std::map<Key, std::vector<int>> cells;
+  auto key = [&](const Eigen::Vector3d& x) {
+    return Key{static_cast<long long>(std::floor(x.x() / tol)), static_cast<long long>(std::floor(x.y() / tol)),
+               static_cast<long long>(std::floor(x.z() / tol))};
+  };
+  for (int i = 0; i < static_cast<int>(refs.size()); ++i) cells[key(point(refs[i]))].push_back(i);
+  std::vector<int> parent(refs.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (int i = 0; i < static_cast<int>(refs.size()); ++i) {
+    const Eigen::Vector3d x = point(refs[i]);
+    const auto [kx, ky, kz] = key(x);
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy)
+        for (long long dz = -1; dz <= 1; ++dz) {
+          const auto it = cells.find(Key{kx + dx, ky + dy, kz + dz});
+          if (it == cells.end()) continue;
+          for (int j : it->second)
+            if (j > i && (point(refs[j]) - x).norm() <= tol) {
+              const int a = find_root(parent, i), b = find_root(parent, j);
+              if (a != b) parent[std::max(a, b)] = std::min(a, b);
+            }
+        }
+  }
+  int moved = 0;
+  double largest = 0.0;
+  for (int i = 0; i < static_cast<int>(refs.size()); ++i) {
+    const int r = find_root(parent, i);
+    if (r == i) continue;
+    const Eigen::Vector3d target = point(refs[r]);
+    const double d = (point(refs[i]) - target).norm();
+    if (d > 0.0) {
+      ++moved;
+      largest = std::max(largest, d);
+      mp.patches[refs[i].patch].control_points.row(refs[i].index) = target.transpose();
+    }
+  }
+  if (max_move) *max_move = largest;
+  return moved;
+}
+
+void find_interfaces(MultiPatch& mp, double tol) {
+  mp.interfaces.clear();
+  const int np = static_cast<int>(mp.patches.size());
+  // Side centroids first: only sides with the same centroid can match.
+  std::vector<std::array<Eigen::Vector3d, 6>> centroid(static_cast<std::size_t>(np));
+  std::vector<std::array<int, 6>> count(static_cast<std::size_t>(np));
+  for (int p = 0; p < np; ++p)
+    for (int s = 1; s <= 6; ++s) {
+      const auto idx = side_control_points(mp.patches[p], s);
+      Eigen::Vector3d c = Eigen::Vector3d::Zero();
+      for (int i : idx) c += mp.patches[p].control_points.row(i).transpose();
+      centroid[p][s - 1] = c / static_cast<double>(idx.size());
+      count[p][s - 1] = static_cast<int>(idx.size());
+    }
+  std::vector<std::array<bool, 6>> used(static_cast<std::size_t>(np), std::array<bool, 6>{});
+  for (int a = 0; a < np; ++a)
+    for (int sa = 1; sa <= 6; ++sa) {
+      if (used[a][sa - 1]) continue;
+      for (int b = a + 1; b < np && !used[a][sa - 1]; ++b)
+        for (int sb = 1; sb <= 6 && !used[a][sa - 1]; ++sb) {
+          if (used[b][sb - 1] || count[a][sa - 1] != count[b][sb - 1]) continue;
+          if ((centroid[a][sa - 1] - centroid[b][sb - 1]).norm() > tol) continue;
+          const int da = side_direction(sa), db = side_direction(sb);
+          const auto ta = side_tangent_directions(sa), tb = side_tangent_directions(sb);
+          MultiPatch probe;
+          probe.patches = {mp.patches[a], mp.patches[b]};
+          for (int swap = 0; swap < 2 && !used[a][sa - 1]; ++swap)
+            for (int o = 0; o < 4 && !used[a][sa - 1]; ++o) {
+              Interface itf;
+              itf.patch_a = 0;
+              itf.side_a = sa;
+              itf.patch_b = 1;
+              itf.side_b = sb;
+              itf.dirmap[da] = db;
+              itf.orient[da] = side_is_max(sa) != side_is_max(sb) ? 1 : 0;
+              itf.dirmap[ta[0]] = tb[swap];
+              itf.dirmap[ta[1]] = tb[1 - swap];
+              itf.orient[ta[0]] = o & 1;
+              itf.orient[ta[1]] = (o >> 1) & 1;
+              probe.interfaces = {itf};
+              try {
+                if (!check_conformity(probe, tol).conforming) continue;
+              } catch (const Error&) {
+                continue;  // counts do not match under this direction map
+              }
+              itf.patch_a = a;
+              itf.patch_b = b;
+              mp.interfaces.push_back(itf);
+              used[a][sa - 1] = used[b][sb - 1] = true;
+            }
+        }
+    }
+}
+
+}  // namespace igaprep::spline

@@ -291,10 +291,11 @@ void scatter(Pattern& P, const std::vector<int>& gid, const Eigen::MatrixXd& Ke)
 // Calls f(ev, q, normal, dA) at every Gauss point of boundary side b: the
 // side's fixed direction is a one-point table at its end, the other two use
 // the patch's volume tables. `normal` is the unit outward normal; points
-// where the side collapses (zero area) are skipped.
-template <class F>
+// where the side collapses (zero area) are skipped. end_element() follows the
+// points of each element of the side.
+template <class F, class E>
 void for_side_points(const spline::Patch& pa, int side, const std::array<std::vector<detail::DirElement>, 3>& tables,
-                     F&& f) {
+                     F&& f, E&& end_element) {
   const int d = spline::side_direction(side);
   const bool at_max = spline::side_is_max(side);
   const auto t = spline::side_tangent_directions(side);
@@ -322,6 +323,7 @@ void for_side_points(const spline::Patch& pa, int side, const std::array<std::ve
           if (at_max ? s < 0 : s > 0) nv = -nv;
           f(ev, q, nv, area * ev.w(q));
         }
+        end_element();
       }
 }
 
@@ -355,8 +357,12 @@ void project_prescribed(const spline::MultiPatch& mp, const spline::GlobalNumber
     }
   std::vector<Eigen::Triplet<double>> trip;
   Eigen::MatrixXd B = Eigen::MatrixXd::Zero(nd, 3);
-  std::vector<int> act_c;
-  std::vector<double> act_r;
+  // Per side element: the side's functions (local index, compact index) and
+  // their mass matrix, added to the triplets once per element.
+  std::vector<int> act_local, act_c;
+  Eigen::MatrixXd Me;
+  Eigen::VectorXd r;
+  bool fresh = true;
   for (const auto& job : jobs) {
     const int p = job.side.patch;
     const spline::Patch& pa = mp.patches[p];
@@ -364,31 +370,39 @@ void project_prescribed(const spline::MultiPatch& mp, const spline::GlobalNumber
     std::vector<unsigned char> on_side(pa.control_points.rows(), 0);
     for (int l : spline::side_control_points(pa, job.side.side)) on_side[l] = 1;
     const std::string& label = job.what->label;
-    for_side_points(pa, job.side.side, tables[p],
-                    [&](const detail::ElementValues& ev, Eigen::Index q, const Eigen::Vector3d&, double dA) {
-                      const Eigen::Vector3d x = ev.x.row(q).transpose();
-                      const Eigen::Vector3d u = job.what->displacement(x);
-                      if (!u.allFinite()) {
-                        std::ostringstream s;
-                        s << "prescribed displacement on '" << label << "': not finite at x = (" << x(0) << ", "
-                          << x(1) << ", " << x(2) << ")";
-                        throw bad_input(s.str());
-                      }
-                      act_c.clear();
-                      act_r.clear();
-                      for (size_t a = 0; a < ev.local.size(); ++a) {
-                        const double r = ev.R(q, static_cast<Eigen::Index>(a));
-                        if (!on_side[ev.local[a]] || r == 0.0) continue;
-                        act_c.push_back(compact[num.global[p][ev.local[a]]]);
-                        act_r.push_back(r);
-                      }
-                      for (size_t i = 0; i < act_c.size(); ++i) {
-                        B.row(act_c[i]) += (act_r[i] * dA) * u.transpose();
-                        for (size_t j = 0; j < act_c.size(); ++j)
-                          if (act_c[j] <= act_c[i])
-                            trip.emplace_back(act_c[i], act_c[j], act_r[i] * act_r[j] * dA);
-                      }
-                    });
+    auto point = [&](const detail::ElementValues& ev, Eigen::Index q, const Eigen::Vector3d&, double dA) {
+      if (fresh) {
+        act_local.clear();
+        act_c.clear();
+        for (size_t a = 0; a < ev.local.size(); ++a)
+          if (on_side[ev.local[a]]) {
+            act_local.push_back(static_cast<int>(a));
+            act_c.push_back(compact[num.global[p][ev.local[a]]]);
+          }
+        Me.setZero(act_c.size(), act_c.size());
+        r.resize(act_c.size());
+        fresh = false;
+      }
+      const Eigen::Vector3d x = ev.x.row(q).transpose();
+      const Eigen::Vector3d u = job.what->displacement(x);
+      if (!u.allFinite()) {
+        std::ostringstream s;
+        s << "prescribed displacement on '" << label << "': not finite at x = (" << x(0) << ", " << x(1) << ", "
+          << x(2) << ")";
+        throw bad_input(s.str());
+      }
+      for (size_t i = 0; i < act_local.size(); ++i) r(i) = ev.R(q, act_local[i]);
+      Me.noalias() += (dA * r) * r.transpose();
+      for (size_t i = 0; i < act_c.size(); ++i) B.row(act_c[i]) += (r(i) * dA) * u.transpose();
+    };
+    auto end_element = [&] {
+      if (fresh) return;  // no point (a collapsed element)
+      for (size_t i = 0; i < act_c.size(); ++i)
+        for (size_t j = 0; j < act_c.size(); ++j)
+          if (act_c[j] <= act_c[i] && Me(i, j) != 0.0) trip.emplace_back(act_c[i], act_c[j], Me(i, j));
+      fresh = true;
+    };
+    for_side_points(pa, job.side.side, tables[p], point, end_element);
   }
   SpMat M(nd, nd);
   M.setFromTriplets(trip.begin(), trip.end());
@@ -596,7 +610,8 @@ ElasticitySolution solve_elasticity(const spline::MultiPatch& input, const Elast
                           if (r >= 0) F(r) += ev.R(q, a) * tr(i) * dA;
                         }
                       }
-                    });
+                    },
+                    [] {});
   };
   for (const auto& tl : problem.tractions)
     for (const auto& b : sides_with_label(mp, tl.label, "--traction")) add_surface_load(b, tl.traction, 0.0);

@@ -19,12 +19,13 @@ param::VolumeParamOptions parse_decomposition_options(const nlohmann::json& s, c
 
 spline::BlockFitOptions parse_fit_options(const nlohmann::json& s, const std::string& file) {
   if (!s.is_object()) case_fail(file, "'fit' must be an object");
-  refuse_unknown_keys(s, {"degree", "elements"}, "fit", file);
+  refuse_unknown_keys(s, {"degree", "elements", "oversample"}, "fit", file);
   spline::BlockFitOptions o;
-  for (const char* key : {"degree", "elements"})
+  for (const char* key : {"degree", "elements", "oversample"})
     if (s.contains(key) && !s[key].is_number_integer()) case_fail(file, std::string("'fit.") + key + "' must be an integer");
   o.degree = static_cast<int>(case_number(s, "degree", o.degree, 1, 5, "fit", file));
   o.elements = static_cast<int>(case_number(s, "elements", o.elements, 1, 32, "fit", file));
+  o.oversample = static_cast<int>(case_number(s, "oversample", o.oversample, 1, 8, "fit", file));
   return o;
 }
 

@@ -22,9 +22,11 @@ void add_run_command(CLI::App& app) {
   auto* sub = app.add_subcommand("run", "Run the pipeline on a case file (default: the built-in model ring2)");
   auto case_path = std::make_shared<std::string>();
   auto output = std::make_shared<std::string>();
+  auto keep = std::make_shared<bool>(false);
   sub->add_option("case", *case_path, "case file (JSON, docs/case-format.md)");
   sub->add_option("-o,--output", *output, "output folder (default: the case's output folder)");
-  set_body(sub, [case_path, output] {
+  sub->add_flag("--keep-intermediate", *keep, "also write the intermediate meshes and fields as VTU files");
+  set_body(sub, [case_path, output, keep] {
     const std::string path = case_path->empty() ? models::builtin_case_path(models::default_model_name()) : *case_path;
     const CaseFile c = read_case_file(path);
     const std::string dir = output->empty() ? c.output_dir : *output;
@@ -41,7 +43,7 @@ void add_run_command(CLI::App& app) {
 
     run_tetmesh_stage(c, surfaces, (std::filesystem::path(dir) / "tetmesh.vtu").string());
     const param::MidsurfaceResult mid = run_midsurface_stage(c, surfaces, dir);
-    const VolumeStageResult volume = run_volume_stages(c, surfaces, mid, dir, false);
+    const VolumeStageResult volume = run_volume_stages(c, surfaces, mid, dir, *keep);
     std::filesystem::create_directories(dir);
     exporter::write_hdf5_model(volume.model, (std::filesystem::path(dir) / "model.h5").string());
     CheckFigures figures;

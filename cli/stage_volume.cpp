@@ -1,6 +1,7 @@
 #include "stage_volume.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 #include "igaprep/mesh/write_vtu.h"
@@ -20,6 +21,13 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
 
   StageTimer t_decomp;
   const param::InsetBase base = param::inset_base_surface(mid.m0trim.mesh, mid.polycube, c.midsurface.m0);
+  if (keep_intermediate) {
+    fs::create_directories(dir);
+    mesh::VtuMesh v = mesh::vtu_triangles(base.mesh);
+    v.add_point_data("u", Eigen::VectorXd(base.uv.col(0)));
+    v.add_point_data("v", Eigen::VectorXd(base.uv.col(1)));
+    mesh::write_vtu((fs::path(dir) / "decomposition_base.vtu").string(), v);
+  }
   const param::DecompositionMesh H = param::decomposition_mesh(surfaces.meshes, base.mesh, c.tetmesh);
   const param::WField w = param::w_field(H);
   const param::BaseLayout layout = param::base_layout(base);
@@ -49,8 +57,14 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
   spline::MultiPatch& mp = out.model;
   for (const auto& s : c.surfaces) mp.labels.push_back(s.label);
   for (const auto& m : c.materials) mp.materials.push_back({m.name, m.young_modulus, m.poisson_ratio});
+  if (const char* dump = std::getenv("IGAPREP_DUMP_BLOCK")) {  // debugging aid: one block's samples as text
+    const auto& b = vp.blocks.at(static_cast<std::size_t>(std::atoi(dump)));
+    std::FILE* f = std::fopen((fs::path(dir) / "block_samples.txt").string().c_str(), "w");
+    for (Eigen::Index i = 0; i < b.samples.rows(); ++i) std::fprintf(f, "%.17g %.17g %.17g\n", b.samples(i, 0), b.samples(i, 1), b.samples(i, 2));
+    std::fclose(f);
+  }
   for (const auto& b : vp.blocks) {
-    spline::Patch p = spline::interpolate_block(b.samples, fit_options);
+    spline::Patch p = spline::fit_block(b.samples, fit_options);
     p.material = b.material;
     mp.patches.push_back(std::move(p));
   }

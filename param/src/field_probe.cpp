@@ -23,7 +23,8 @@ bool FieldProbe::coordinates(int c, const Eigen::Vector3d& p, Eigen::Vector4d& b
 
 int FieldProbe::locate(const Eigen::Vector3d& p, int* hint, Eigen::Vector4d* bary) const {
   const int m = static_cast<int>(T_.rows());
-  int c = (hint && *hint >= 0 && *hint < m) ? *hint : 0;
+  const bool fresh = !(hint && *hint >= 0 && *hint < m);
+  int c = fresh ? 0 : *hint;
   Eigen::Vector4d b;
   for (int it = 0; it < 10000; ++it) {
     if (!coordinates(c, p, b)) break;
@@ -34,10 +35,13 @@ int FieldProbe::locate(const Eigen::Vector3d& p, int* hint, Eigen::Vector4d* bar
       return c;
     }
     const int next = topo_.neighbor(c, k);
-    if (next < 0) return -1;  // p lies beyond a boundary facet
+    if (next < 0) {
+      if (!fresh) return -1;  // a short step from a known tet: p lies beyond this boundary facet
+      break;                  // a walk from far away can leave a non-convex mesh: scan
+    }
     c = next;
   }
-  // The walk cycled (a flat tet or a non-Delaunay mesh): scan.
+  // The walk cycled (a flat tet or a non-Delaunay mesh) or left the mesh: scan.
   int best = -1;
   double best_min = -1e-9;
   for (int x = 0; x < m; ++x)
@@ -69,8 +73,8 @@ bool FieldProbe::gradient(const Eigen::Vector3d& p, int* hint, Eigen::Vector3d* 
 }
 
 Eigen::Vector3d FieldProbe::ray_to_level(const Eigen::Vector3d& start, const Eigen::Vector3d& direction, double level,
-                                         double step, double max_length) const {
-  int hint = -1;
+                                         double step, double max_length, int* start_hint) const {
+  int hint = start_hint ? *start_hint : -1;
   auto fail = [&](const char* why) {
     std::ostringstream m;
     m << "ray to the level " << level << " from (" << start.transpose() << ") along (" << direction.transpose()
@@ -78,7 +82,8 @@ Eigen::Vector3d FieldProbe::ray_to_level(const Eigen::Vector3d& start, const Eig
     return check_failed(m.str());
   };
   double lo = 0.0;
-  const double u0 = value(start, &hint);
+  double u0 = value(start, &hint);
+  if (std::isnan(u0)) hint = -1, u0 = value(start, &hint);  // the hint was far away: search afresh
   if (!(u0 > level)) throw fail("the start point is not above the level");
   for (double t = step; t <= max_length + step; t += step) {
     const double u = value(start + t * direction, &hint);
@@ -89,6 +94,7 @@ Eigen::Vector3d FieldProbe::ray_to_level(const Eigen::Vector3d& start, const Eig
         const double mid = 0.5 * (lo + hi);
         (value(start + mid * direction, &hint) > level ? lo : hi) = mid;
       }
+      if (start_hint) *start_hint = hint;
       return start + hi * direction;
     }
     lo = t;

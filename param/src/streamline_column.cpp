@@ -21,13 +21,14 @@ Eigen::Vector3d StreamlineColumn::at_level(double level) const {
   return path.row(k - 1).transpose();
 }
 
-StreamlineColumn trace_column(const FieldProbe& probe, const Eigen::Vector3d& start, double step, int max_steps) {
+StreamlineColumn trace_column(const FieldProbe& probe, const Eigen::Vector3d& start, double step, int* start_hint,
+                              int max_steps) {
   auto fail = [&](const std::string& why) {
     std::ostringstream m;
     m << "streamline from (" << start.transpose() << "): " << why;
     return check_failed(m.str());
   };
-  int hint = -1;
+  int hint = start_hint ? *start_hint : -1;
   // Unit descent direction at x; false outside H.
   auto direction = [&](const Eigen::Vector3d& x, Eigen::Vector3d* d) {
     Eigen::Vector3d g;
@@ -40,7 +41,9 @@ StreamlineColumn trace_column(const FieldProbe& probe, const Eigen::Vector3d& st
   };
   std::vector<Eigen::Vector3d> pts{start};
   std::vector<double> ws{probe.value(start, &hint)};
+  if (std::isnan(ws[0])) hint = -1, ws[0] = probe.value(start, &hint);  // the hint was far away
   if (std::isnan(ws[0])) throw fail("the start point lies outside H");
+  if (start_hint) *start_hint = hint;
   Eigen::Vector3d x = start;
   for (int it = 0; it < max_steps; ++it) {
     Eigen::Vector3d d1, d2, next;

@@ -122,9 +122,10 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
     }
     return f;
   };
+  int hint = -1;  // the tet of the previous query: consecutive queries are close
   auto ray = [&](const Frame& f, double side) {
     const Eigen::Vector3d dir = (side * f.normal + cot_theta * f.lean).normalized();
-    return probe.ray_to_level(f.position, dir, out.w0, step, 0.5 * diag);
+    return probe.ray_to_level(f.position, dir, out.w0, step, 0.5 * diag, &hint);
   };
 
   // Per rectangle: M, the top and the bottom of the core on an m x m grid.
@@ -190,7 +191,14 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
       P1[k] = g.bottom[q];
       const Frame f = frame(g.uv[q]);
       if (f.lean.norm() == 0.0) throw internal_error("volume parameterization: no binormal on M's boundary");
-      P2[k] = probe.ray_to_level(f.position, f.lean.normalized(), out.w0, step, 0.5 * diag);
+      // P2 out along the binormal, so that the crest's cross-section is
+      // close to a kite with right angles at P3 and P1 (crest_reach = 1),
+      // but no farther than the level halfway between Tn and T(n+1).
+      const Eigen::Vector3d b = f.lean.normalized();
+      const double r3 = 0.5 * ((P3[k] - P0[k]).norm() + (P1[k] - P0[k]).norm());
+      const double kite = options.crest_reach * r3 / std::cos(options.theta);
+      const Eigen::Vector3d limit = probe.ray_to_level(f.position, b, 0.5 * (inner + out.w0), step, 0.5 * diag, &hint);
+      P2[k] = f.position + std::min(kite, (limit - f.position).norm()) * b;
     }
     Eigen::MatrixXd s(m * m * m, 3);
     Grid2 upper(m * m), lower(m * m);
@@ -217,7 +225,7 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
   for (std::size_t f = 0; f < core_faces.size(); ++f) {
     std::vector<StreamlineColumn> cols;
     cols.reserve(static_cast<std::size_t>(m * m));
-    for (const Eigen::Vector3d& y : core_faces[f]) cols.push_back(trace_column(probe, y, step));
+    for (const Eigen::Vector3d& y : core_faces[f]) cols.push_back(trace_column(probe, y, step, &hint));
     out.streamlines += m * m;
     for (int layer = 1; layer <= n; ++layer) {
       const double lo = static_cast<double>(layer - 1) / n;

@@ -19,8 +19,9 @@ class FieldProbe {
       : V_(V), T_(T), topo_(topology), u_(u), grad_(vertex_gradient) {}
 
   // The tet holding p by a visibility walk from *hint (then a scan when the
-  // walk cycles); -1 when the walk leaves the mesh through its boundary or no
-  // tet holds p. *hint receives the tet found; *bary its barycentric coordinates.
+  // walk cycles, or when it leaves the mesh and no hint was given); -1 when a
+  // walk from a hint leaves the mesh through its boundary (the steps of rays
+  // and streamlines are short) or no tet holds p. *hint receives the tet found; *bary its barycentric coordinates.
   int locate(const Eigen::Vector3d& p, int* hint, Eigen::Vector4d* bary) const;
 
   // u at p (NaN outside the mesh).
@@ -36,8 +37,9 @@ class FieldProbe {
   // (the first march step that reaches it, then bisection to 1e-12 of the
   // step). Throws check_failed when the ray leaves the mesh or runs
   // max_length without reaching the level.
+  // *hint: a tet near start (receives the last tet visited).
   Eigen::Vector3d ray_to_level(const Eigen::Vector3d& start, const Eigen::Vector3d& direction, double level,
-                               double step, double max_length) const;
+                               double step, double max_length, int* hint = nullptr) const;
 
  private:
   bool coordinates(int c, const Eigen::Vector3d& p, Eigen::Vector4d& b) const;

@@ -35,6 +35,7 @@ struct VolumeParamOptions {
   double theta = 0.78539816339744831;  // pi/4: angle of S+ and S- from M's plane at its boundary
   double w0 = -1.0;     // iso-value of T(n+1) in ((n - 1)/n, 1); < 0: midway
   double blend = 0.25;  // the rays lean out within this fraction of min(W, H) of M's boundary (in (u, v))
+  double crest_reach = 0.8;  // P2 at this fraction of the kite point (see build_volume_param)
   double ray_step = 2e-3;  // ray march step, fraction of H's bounding-box diagonal
 };
 

@@ -346,13 +346,17 @@ void project_prescribed(const spline::MultiPatch& mp, const spline::GlobalNumber
   };
   std::vector<SideJob> jobs;
   std::vector<int> compact(ncp, -1);
+  std::vector<std::pair<int, int>> first_seen;  // per compact index: (job, local control point)
   int nd = 0;
   for (const auto& pr : prescribed)
     for (const auto& b : sides_with_label(mp, pr.label, "prescribed displacement")) {
       jobs.push_back({b, &pr});
       for (int l : spline::side_control_points(mp.patches[b.patch], b.side)) {
         const int g = num.global[b.patch][l];
-        if (compact[g] < 0) compact[g] = nd++;
+        if (compact[g] < 0) {
+          compact[g] = nd++;
+          first_seen.push_back({static_cast<int>(jobs.size()) - 1, l});
+        }
       }
     }
   std::vector<Eigen::Triplet<double>> trip;
@@ -403,6 +407,34 @@ void project_prescribed(const spline::MultiPatch& mp, const spline::GlobalNumber
       fresh = true;
     };
     for_side_points(pa, job.side.side, tables[p], point, end_element);
+  }
+  // A function whose trace has no area (every side it lives on collapses to
+  // a curve or point) has a zero row: it takes the value at its control
+  // point, which is where that collapsed side lies. Its off-diagonal entries
+  // are bounded by the zero diagonal and are dropped.
+  {
+    Eigen::VectorXd diag = Eigen::VectorXd::Zero(nd);
+    for (const auto& t : trip)
+      if (t.row() == t.col()) diag(t.row()) += t.value();
+    const double tiny = 1e-12 * (nd > 0 ? diag.maxCoeff() : 0.0);
+    std::vector<unsigned char> collapsed(nd, 0);
+    bool any = false;
+    for (int c = 0; c < nd; ++c)
+      if (!(diag(c) > tiny)) collapsed[c] = 1, any = true;
+    if (any) {
+      trip.erase(std::remove_if(trip.begin(), trip.end(),
+                                [&](const Eigen::Triplet<double>& t) { return collapsed[t.row()] || collapsed[t.col()]; }),
+                 trip.end());
+      for (int c = 0; c < nd; ++c) {
+        if (!collapsed[c]) continue;
+        const auto& [job, local] = first_seen[c];
+        const Eigen::Vector3d x = mp.patches[jobs[job].side.patch].control_points.row(local).transpose();
+        const Eigen::Vector3d u = jobs[job].what->displacement(x);
+        if (!u.allFinite()) throw bad_input("prescribed displacement on '" + jobs[job].what->label + "': not finite");
+        trip.emplace_back(c, c, 1.0);
+        B.row(c) = u.transpose();
+      }
+    }
   }
   SpMat M(nd, nd);
   M.setFromTriplets(trip.begin(), trip.end());

@@ -13,7 +13,7 @@ param::VolumeParamOptions parse_decomposition_options(const nlohmann::json& s, c
     case_fail(file, "'decomposition.strategy' must be 1 or 2");
   o.theta = case_number(s, "theta", o.theta, 0.05, 1.5, "decomposition", file);
   o.w0 = case_number(s, "w0", o.w0, 0.0, 1.0, "decomposition", file);
-  o.blend = case_number(s, "blend", o.blend, 0.01, 0.5, "decomposition", file);
+  o.blend = case_number(s, "blend", o.blend, 0.01, 4.0, "decomposition", file);
   return o;
 }
 

@@ -52,6 +52,14 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
               t_param.seconds(), vp.w0, vp.blocks.size(), vp.core_faces, vp.layers, vp.streamlines, vp.folded_cells);
   std::fflush(stdout);
 
+  if (vp.folded_cells > 0) {
+    std::printf("           folded sample cells:");
+    for (std::size_t i = 0; i < vp.blocks.size(); ++i)
+      if (vp.blocks[i].folded > 0)
+        std::printf(" block %zu (%s %d, layer %d): %d;", i, param::to_string(vp.blocks[i].kind), vp.blocks[i].source,
+                    vp.blocks[i].layer, vp.blocks[i].folded);
+    std::printf("\n");
+  }
   StageTimer t_fit;
   VolumeStageResult out;
   spline::MultiPatch& mp = out.model;

@@ -68,9 +68,7 @@ int split_sheet_along_line(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, int axis, 
   return static_cast<int>(cut.size());
 }
 
-InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double m0) {
-  if (!(m0 > 0.0 && m0 < 1.0)) throw bad_input("inset base surface: m0 = " + std::to_string(m0) + " is outside (0, 1)");
-  const RectilinearDomain& D = polycube.domain;
+double narrowest_band(const RectilinearDomain& D) {
   double band = std::min(D.width, D.height);
   for (const auto& h : D.holes) {
     band = std::min({band, h(0), h(1), D.width - h(2), D.height - h(3)});
@@ -80,6 +78,13 @@ InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polyc
       if (std::max(gu, gv) > 0.0) band = std::min(band, std::max(gu, gv));
     }
   }
+  return band;
+}
+
+InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double m0) {
+  if (!(m0 > 0.0 && m0 < 1.0)) throw bad_input("inset base surface: m0 = " + std::to_string(m0) + " is outside (0, 1)");
+  const RectilinearDomain& D = polycube.domain;
+  const double band = narrowest_band(D);
   const double d = 0.5 * m0 * band;
 
   InsetBase out;

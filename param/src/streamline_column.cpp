@@ -22,7 +22,7 @@ Eigen::Vector3d StreamlineColumn::at_level(double level) const {
 }
 
 StreamlineColumn trace_column(const FieldProbe& probe, const Eigen::Vector3d& start, double step, int* start_hint,
-                              int max_steps) {
+                              double stop_level, int max_steps) {
   auto fail = [&](const std::string& why) {
     std::ostringstream m;
     m << "streamline from (" << start.transpose() << "): " << why;
@@ -44,6 +44,16 @@ StreamlineColumn trace_column(const FieldProbe& probe, const Eigen::Vector3d& st
   if (std::isnan(ws[0])) hint = -1, ws[0] = probe.value(start, &hint);  // the hint was far away
   if (std::isnan(ws[0])) throw fail("the start point lies outside H");
   if (start_hint) *start_hint = hint;
+  auto column = [&] {
+    StreamlineColumn c;
+    c.path.resize(static_cast<Eigen::Index>(pts.size()), 3);
+    c.w.resize(static_cast<Eigen::Index>(pts.size()));
+    for (std::size_t j = 0; j < pts.size(); ++j) {
+      c.path.row(static_cast<Eigen::Index>(j)) = pts[j].transpose();
+      c.w(static_cast<Eigen::Index>(j)) = j == 0 ? ws[j] : std::min(ws[j], c.w(static_cast<Eigen::Index>(j) - 1));
+    }
+    return c;
+  };
   Eigen::Vector3d x = start;
   for (int it = 0; it < max_steps; ++it) {
     Eigen::Vector3d d1, d2, next;
@@ -54,6 +64,7 @@ StreamlineColumn trace_column(const FieldProbe& probe, const Eigen::Vector3d& st
       x = next;
       pts.push_back(x);
       ws.push_back(probe.value(x, &hint));
+      if (stop_level > 0.0 && ws.back() <= stop_level) return column();
       continue;
     }
     // The step leaves H: bisect for the crossing of the outer boundary (T1).
@@ -65,14 +76,7 @@ StreamlineColumn trace_column(const FieldProbe& probe, const Eigen::Vector3d& st
     const Eigen::Vector3d end = x + lo * (next - x);
     pts.push_back(end);
     ws.push_back(probe.value(end, &hint));
-    StreamlineColumn c;
-    c.path.resize(static_cast<Eigen::Index>(pts.size()), 3);
-    c.w.resize(static_cast<Eigen::Index>(pts.size()));
-    for (std::size_t j = 0; j < pts.size(); ++j) {
-      c.path.row(static_cast<Eigen::Index>(j)) = pts[j].transpose();
-      c.w(static_cast<Eigen::Index>(j)) = j == 0 ? ws[j] : std::min(ws[j], c.w(static_cast<Eigen::Index>(j) - 1));
-    }
-    return c;
+    return column();
   }
   throw fail("no exit through T1 within " + std::to_string(max_steps) + " steps");
 }

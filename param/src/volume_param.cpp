@@ -10,6 +10,7 @@
 #include "igaprep/core/progress.h"
 #include "igaprep/param/field_probe.h"
 #include "igaprep/param/gradient.h"
+#include "igaprep/param/inset_base.h"
 #include "igaprep/param/sheet_sampler.h"
 #include "igaprep/param/streamline_column.h"
 #include "igaprep/param/tet_topology.h"
@@ -42,7 +43,7 @@ double segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, cons
 
 // Reverses the first direction when the grid's finite-difference Jacobian at
 // its centre is negative; counts the cells whose corner tets are not positive.
-void orient_block(SampledBlock& b, int m, int& folded) {
+void orient_block(SampledBlock& b, int m) {
   auto at = [&](int i, int j, int k) -> Eigen::Vector3d { return b.samples.row(i + m * (j + m * k)).transpose(); };
   const int c = m / 2;
   Eigen::Matrix3d J;
@@ -66,7 +67,7 @@ void orient_block(SampledBlock& b, int m, int& folded) {
         E.col(0) = at(i + 1, j, k) - o;
         E.col(1) = at(i, j + 1, k) - o;
         E.col(2) = at(i, j, k + 1) - o;
-        if (!(E.determinant() > 0.0)) ++folded;
+        if (!(E.determinant() > 0.0)) ++b.folded;
       }
 }
 
@@ -99,7 +100,7 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
   const double diag = (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm();
   const double step = options.ray_step * diag;
   const RectilinearDomain& D = layout.domain;
-  const double kappa = options.blend * std::min(D.width, D.height);
+  const double kappa = options.blend * narrowest_band(D);
   const double cot_theta = 1.0 / std::tan(options.theta);
   const SheetSampler sheet(layout.sheet, layout.uv);
 
@@ -120,9 +121,15 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
       const double beta = (1.0 - d / kappa) * (1.0 - d / kappa);
       f.lean += beta * b.normalized();
     }
+    // At most unit length: at a convex corner the two sides add up, and the
+    // rays would leave M at less than theta (too flat, the lid folds).
+    if (f.lean.norm() > 1.0) f.lean.normalize();
     return f;
   };
   int hint = -1;  // the tet of the previous query: consecutive queries are close
+  // The lid point above (side = 1) or below (-1) M at f: straight along
+  // the leaning direction to w0. (Streamlines of -grad w from M would not
+  // cross, but near M's boundary they all bend to the crest.)
   auto ray = [&](const Frame& f, double side) {
     const Eigen::Vector3d dir = (side * f.normal + cot_theta * f.lean).normalized();
     return probe.ray_to_level(f.position, dir, out.w0, step, 0.5 * diag, &hint);
@@ -166,7 +173,8 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
     b.material = material;
     b.samples = std::move(samples);
     if (t1_side >= 0) b.side_label[static_cast<std::size_t>(t1_side)] = 0;
-    orient_block(b, m, out.folded_cells);
+    orient_block(b, m);
+    out.folded_cells += b.folded;
     out.blocks.push_back(std::move(b));
   };
   const int core_material = n - 1;

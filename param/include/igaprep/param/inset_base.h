@@ -29,6 +29,10 @@ struct InsetBase {
 // it in (u, v) first (no slivers). Returns the number of edges split.
 int split_sheet_along_line(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, int axis, double c, double snap);
 
+// The narrowest band of a domain: its width, its height, the gaps between
+// holes and between a hole and the outside.
+double narrowest_band(const RectilinearDomain& domain);
+
 // Inputs: M0trim with its 2D polycube, m0 in (0, 1): d = m0 x half the
 // narrowest band of the domain (its width, its height, and the gaps between
 // holes and between a hole and the outside). Output: the inset sheet.

@@ -25,7 +25,8 @@ struct StreamlineColumn {
 // its outer boundary T1 (the last point is on T1, found by bisection).
 // Throws check_failed naming the start point when the gradient vanishes or
 // the step budget runs out.
+// With stop_level > 0 the column ends at the first point where w <= stop_level.
 StreamlineColumn trace_column(const FieldProbe& probe, const Eigen::Vector3d& start, double step,
-                              int* start_hint = nullptr, int max_steps = 100000);
+                              int* start_hint = nullptr, double stop_level = 0.0, int max_steps = 100000);
 
 }  // namespace igaprep::param

@@ -34,7 +34,7 @@ struct VolumeParamOptions {
   int strategy = 2;  // section 6: 2 (default) or 1
   double theta = 0.78539816339744831;  // pi/4: angle of S+ and S- from M's plane at its boundary
   double w0 = -1.0;     // iso-value of T(n+1) in ((n - 1)/n, 1); < 0: midway
-  double blend = 0.25;  // the rays lean out within this fraction of min(W, H) of M's boundary (in (u, v))
+  double blend = 0.25;  // the rays lean out within this fraction of the narrowest band of M's domain from its boundary
   double crest_reach = 0.8;  // P2 at this fraction of the kite point (see build_volume_param)
   double ray_step = 2e-3;  // ray march step, fraction of H's bounding-box diagonal
 };
@@ -51,7 +51,8 @@ struct SampledBlock {
   // Per side (G+Smo order u0, u1, v0, v1, w0, w1): the surface label it lies
   // on when it is a boundary of the model (0 = T1), else -1 (an interface).
   std::array<int, 6> side_label{{-1, -1, -1, -1, -1, -1}};
-  bool mirrored = false;  // the first direction was reversed for a positive orientation
+  bool mirrored = false;
+  int folded = 0;  // sample-grid cells with a non-positive corner volume  // the first direction was reversed for a positive orientation
 };
 
 struct VolumeParam {

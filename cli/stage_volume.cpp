@@ -66,9 +66,10 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
   for (const auto& s : c.surfaces) mp.labels.push_back(s.label);
   for (const auto& m : c.materials) mp.materials.push_back({m.name, m.young_modulus, m.poisson_ratio});
   if (const char* dump = std::getenv("IGAPREP_DUMP_BLOCK")) {  // debugging aid: one block's samples as text
-    const auto& b = vp.blocks.at(static_cast<std::size_t>(std::atoi(dump)));
     std::FILE* f = std::fopen((fs::path(dir) / "block_samples.txt").string().c_str(), "w");
-    for (Eigen::Index i = 0; i < b.samples.rows(); ++i) std::fprintf(f, "%.17g %.17g %.17g\n", b.samples(i, 0), b.samples(i, 1), b.samples(i, 2));
+    for (const auto& b : vp.blocks)
+      for (Eigen::Index i = 0; i < b.samples.rows(); ++i)
+        std::fprintf(f, "%.17g %.17g %.17g\n", b.samples(i, 0), b.samples(i, 1), b.samples(i, 2));
     std::fclose(f);
   }
   for (const auto& b : vp.blocks) {

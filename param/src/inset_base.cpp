@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
+
+#include <Eigen/Geometry>
 
 #include "igaprep/core/error.h"
 #include "igaprep/param/base_layout.h"
@@ -81,7 +84,38 @@ double narrowest_band(const RectilinearDomain& D) {
   return band;
 }
 
-InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double m0) {
+void smooth_sheet(mesh::TriMesh& sheet, const std::vector<char>& fixed, int rounds) {
+  const Eigen::Index nv = sheet.V.rows();
+  // Moves are along the vertex normal only: a tangential move would shift
+  // the surface under its (u, v) parameterization.
+  std::set<std::pair<int, int>> edges;
+  for (Eigen::Index f = 0; f < sheet.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) edges.insert(std::minmax(sheet.F(f, k), sheet.F(f, (k + 1) % 3)));
+  std::vector<std::vector<int>> nb(static_cast<std::size_t>(nv));
+  for (const auto& e : edges) nb[e.first].push_back(e.second), nb[e.second].push_back(e.first);
+  auto step = [&](double factor) {
+    Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(nv, 3);
+    for (Eigen::Index f = 0; f < sheet.F.rows(); ++f) {
+      const Eigen::Vector3d a = (sheet.V.row(sheet.F(f, 1)) - sheet.V.row(sheet.F(f, 0))).transpose();
+      const Eigen::Vector3d b = (sheet.V.row(sheet.F(f, 2)) - sheet.V.row(sheet.F(f, 0))).transpose();
+      const Eigen::Vector3d n = a.cross(b);
+      for (int k = 0; k < 3; ++k) normal.row(sheet.F(f, k)) += n.transpose();
+    }
+    Eigen::MatrixXd next = sheet.V;
+    for (Eigen::Index v = 0; v < nv; ++v) {
+      if (fixed[static_cast<std::size_t>(v)] || nb[v].empty() || normal.row(v).norm() == 0.0) continue;
+      Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
+      for (int u : nb[v]) mean += sheet.V.row(u);
+      mean /= static_cast<double>(nb[v].size());
+      const Eigen::RowVector3d n = normal.row(v).normalized();
+      next.row(v) += factor * (mean - sheet.V.row(v)).dot(n) * n;
+    }
+    sheet.V = next;
+  };
+  for (int r = 0; r < rounds; ++r) step(0.5), step(-0.53);  // Taubin: smooths without shrinking
+}
+
+InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double m0, int smoothing) {
   if (!(m0 > 0.0 && m0 < 1.0)) throw bad_input("inset base surface: m0 = " + std::to_string(m0) + " is outside (0, 1)");
   const RectilinearDomain& D = polycube.domain;
   const double band = narrowest_band(D);
@@ -132,8 +166,21 @@ InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polyc
   Eigen::MatrixXd V(count, 3), uv(count, 2);
   for (std::size_t v = 0; v < index.size(); ++v)
     if (index[v] >= 0) V.row(index[v]) = out.mesh.V.row(static_cast<Eigen::Index>(v)), uv.row(index[v]) = out.uv.row(static_cast<Eigen::Index>(v));
-  out.mesh = {V, F};
   out.uv = uv;
+  // The corners of the domain stay; everything else is smoothed (M0trim is
+  // the zero set of a P1 field: wavy at the scale of the tets, and the thin
+  // crest volumes along M's boundary would inherit the waves).
+  std::vector<char> corner(static_cast<std::size_t>(count), 0);
+  auto on_side = [](double x, const std::vector<double>& values) {
+    for (double c : values)
+      if (std::abs(x - c) <= 1e-12 * (1.0 + std::abs(c))) return true;
+    return false;
+  };
+  std::vector<double> us{0.0, out.domain.width}, vs{0.0, out.domain.height};
+  for (const auto& h : out.domain.holes) us.push_back(h(0)), us.push_back(h(2)), vs.push_back(h(1)), vs.push_back(h(3));
+  for (int v = 0; v < count; ++v) corner[static_cast<std::size_t>(v)] = on_side(uv(v, 0), us) && on_side(uv(v, 1), vs);
+  out.mesh = {V, F};
+  smooth_sheet(out.mesh, corner, smoothing);
   const SheetTopology topo = analyze_sheet(F, V.rows());
   const std::string problem =
       describe_sheet_problem(topo, static_cast<int>(D.holes.size()) + 1, "the inset base surface (d = " + std::to_string(d) + ")");

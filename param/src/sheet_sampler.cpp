@@ -27,7 +27,7 @@ struct SheetSampler::Tree {
   CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree;
 };
 
-SheetSampler::SheetSampler(const mesh::TriMesh& sheet, const Eigen::MatrixXd& uv)
+SheetSampler::SheetSampler(const mesh::TriMesh& sheet, const Eigen::MatrixXd& uv, int smoothing_rounds)
     : sheet_(sheet), uv_(uv), tree_(std::make_unique<Tree>()) {
   const auto& V = sheet.V;
   const auto& F = sheet.F;
@@ -63,6 +63,29 @@ SheetSampler::SheetSampler(const mesh::TriMesh& sheet, const Eigen::MatrixXd& uv
       normal_.row(v).normalize();
       du_.row(v) /= weight(v);
       dv_.row(v) /= weight(v);
+    }
+  }
+  // A few rounds of area-weighted averaging over the one-ring: the sheet is
+  // the zero set of a P1 field, and a vertex with one or two thin triangles
+  // (at a corner of the domain) can have a normal several degrees off.
+  for (int round = 0; round < smoothing_rounds; ++round) {
+    Eigen::MatrixXd n = Eigen::MatrixXd::Zero(V.rows(), 3), a = n, b = n;
+    for (Eigen::Index f = 0; f < F.rows(); ++f) {
+      const Eigen::Vector3d e1 = V.row(F(f, 1)) - V.row(F(f, 0)), e2 = V.row(F(f, 2)) - V.row(F(f, 0));
+      const double area = 0.5 * e1.cross(e2).norm();
+      Eigen::RowVector3d fn = Eigen::RowVector3d::Zero(), fa = fn, fb = fn;
+      for (int k = 0; k < 3; ++k) fn += normal_.row(F(f, k)), fa += du_.row(F(f, k)), fb += dv_.row(F(f, k));
+      for (int k = 0; k < 3; ++k) {
+        n.row(F(f, k)) += area * fn / 3.0;
+        a.row(F(f, k)) += area * fa / 3.0;
+        b.row(F(f, k)) += area * fb / 3.0;
+      }
+    }
+    for (Eigen::Index v = 0; v < V.rows(); ++v) {
+      if (!(weight(v) > 0.0)) continue;
+      normal_.row(v) = n.row(v).normalized();
+      du_.row(v) = a.row(v) / weight(v);
+      dv_.row(v) = b.row(v) / weight(v);
     }
   }
   tree_->tree.insert(tree_->triangles.cbegin(), tree_->triangles.cend());

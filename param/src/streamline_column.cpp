@@ -8,17 +8,27 @@
 
 namespace igaprep::param {
 
-Eigen::Vector3d StreamlineColumn::at_level(double level) const {
+double StreamlineColumn::arc_at_level(double level) const {
   const Eigen::Index k = w.size();
-  if (level >= w(0)) return path.row(0).transpose();
+  if (level >= w(0)) return 0.0;
   for (Eigen::Index j = 0; j + 1 < k; ++j) {
     if (w(j + 1) <= level) {
       const double dw = w(j) - w(j + 1);
       const double t = dw > 0.0 ? (w(j) - level) / dw : 1.0;
-      return ((1.0 - t) * path.row(j) + t * path.row(j + 1)).transpose();
+      return (1.0 - t) * arc(j) + t * arc(j + 1);
     }
   }
-  return path.row(k - 1).transpose();
+  return arc(k - 1);
+}
+
+Eigen::Vector3d StreamlineColumn::at_arc(double s) const {
+  const Eigen::Index k = arc.size();
+  if (s <= 0.0) return path.row(0).transpose();
+  const Eigen::Index j = std::upper_bound(arc.data(), arc.data() + k, s) - arc.data();  // arc(j - 1) <= s < arc(j)
+  if (j >= k) return path.row(k - 1).transpose();
+  const double len = arc(j) - arc(j - 1);
+  const double t = len > 0.0 ? (s - arc(j - 1)) / len : 0.0;
+  return ((1.0 - t) * path.row(j - 1) + t * path.row(j)).transpose();
 }
 
 StreamlineColumn trace_column(const FieldProbe& probe, const Eigen::Vector3d& start, double step, int* start_hint,
@@ -48,6 +58,9 @@ StreamlineColumn trace_column(const FieldProbe& probe, const Eigen::Vector3d& st
     StreamlineColumn c;
     c.path.resize(static_cast<Eigen::Index>(pts.size()), 3);
     c.w.resize(static_cast<Eigen::Index>(pts.size()));
+    c.arc = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(pts.size()));
+    for (std::size_t j = 1; j < pts.size(); ++j)
+      c.arc(static_cast<Eigen::Index>(j)) = c.arc(static_cast<Eigen::Index>(j) - 1) + (pts[j] - pts[j - 1]).norm();
     for (std::size_t j = 0; j < pts.size(); ++j) {
       c.path.row(static_cast<Eigen::Index>(j)) = pts[j].transpose();
       c.w(static_cast<Eigen::Index>(j)) = j == 0 ? ws[j] : std::min(ws[j], c.w(static_cast<Eigen::Index>(j) - 1));

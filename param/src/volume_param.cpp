@@ -240,12 +240,15 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
       Eigen::MatrixXd s(m * m * m, 3);
       for (int q = 0; q < m * m; ++q) {
         const StreamlineColumn& col = cols[static_cast<std::size_t>(q)];
-        const double hi = layer == n ? col.w(0) : static_cast<double>(layer) / n;
+        // Arc lengths of the layer's outer (w = lo) and inner ends; the inner
+        // end of the innermost layer is the core face itself (arc 0).
+        const double s_lo = col.arc_at_level(lo);
+        const double s_hi = layer == n ? 0.0 : col.arc_at_level(static_cast<double>(layer) / n);
         for (int k = 0; k < m; ++k) {
           Eigen::Vector3d x;
-          if (k == 0) x = col.at_level(lo);
-          else if (k == m - 1) x = layer == n ? core_faces[f][q] : col.at_level(hi);
-          else x = col.at_level(lo + params[k] * (hi - lo));
+          if (k == 0) x = col.at_arc(s_lo);
+          else if (k == m - 1) x = layer == n ? core_faces[f][q] : col.at_arc(s_hi);
+          else x = col.at_arc(s_lo + params[k] * (s_hi - s_lo));
           s.row(q + m * m * k) = x.transpose();
         }
       }

@@ -35,9 +35,14 @@ double narrowest_band(const RectilinearDomain& domain);
 
 // Inputs: M0trim with its 2D polycube, m0 in (0, 1): d = m0 x half the
 // narrowest band of the domain (its width, its height, and the gaps between
-// holes and between a hole and the outside). Output: the inset sheet.
+// holes and between a hole and the outside); rounds of Taubin smoothing of
+// the 3D positions along the normals (the domain's corners fixed). Output: the inset sheet.
 // Throws check_failed when the result is not one sheet with one boundary
 // loop per domain boundary.
-InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double m0);
+InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double m0, int smoothing = 20);
+
+// Taubin smoothing (lambda 0.5, mu -0.53) of a sheet's vertices along their
+// normals (no tangential drift under the (u, v) map); `fixed` vertices stay.
+void smooth_sheet(mesh::TriMesh& sheet, const std::vector<char>& fixed, int rounds);
 
 }  // namespace igaprep::param

@@ -21,9 +21,10 @@ struct SheetPoint {
 class SheetSampler {
  public:
   // Inputs: the sheet and its (u, v) per vertex (#V x 2, a bijective map:
-  // every triangle positively oriented). Builds a search tree of the (u, v)
-  // triangles and the per-vertex normals and tangents (area-weighted).
-  SheetSampler(const mesh::TriMesh& sheet, const Eigen::MatrixXd& uv);
+  // every triangle positively oriented), rounds of one-ring smoothing of the
+  // normals and tangents. Builds a search tree of the (u, v) triangles and
+  // the per-vertex normals and tangents (area-weighted).
+  SheetSampler(const mesh::TriMesh& sheet, const Eigen::MatrixXd& uv, int smoothing_rounds = 3);
   ~SheetSampler();
   SheetSampler(const SheetSampler&) = delete;
   SheetSampler& operator=(const SheetSampler&) = delete;

@@ -1,7 +1,9 @@
 #pragma once
 // A streamline of -grad w from a point down to T1 (w = 0), with w along it:
 // the shell patches of the volume layout sample it at the w-levels of their
-// layers (w = (i - 1)/n on Ti), so the layer faces lie exactly on the Ti.
+// layers (w = (i - 1)/n on Ti), so the layer faces lie exactly on the Ti;
+// between them by arc length, which is smooth along the path (w sampled
+// along a path through P1 tets is not).
 // The streamline follows the continuous (vertex-interpolated) gradient, so
 // neighbouring streamlines never merge.
 #include <Eigen/Core>
@@ -13,10 +15,14 @@ namespace igaprep::param {
 struct StreamlineColumn {
   Eigen::MatrixXd path;  // k x 3, from the start point to T1
   Eigen::VectorXd w;     // k: w at each point, made non-increasing (running minimum)
+  Eigen::VectorXd arc;   // k: arc length from the start
 
-  // The point where w = level (linear along the path); the start point for
-  // level >= w(0), the end for level <= w(end).
-  Eigen::Vector3d at_level(double level) const;
+  // Arc length where w first reaches level (linear along the path); 0 for
+  // level >= w(0), the whole length for level <= w(end).
+  double arc_at_level(double level) const;
+  // The point at arc length s (clamped to the path).
+  Eigen::Vector3d at_arc(double s) const;
+  Eigen::Vector3d at_level(double level) const { return at_arc(arc_at_level(level)); }
 };
 
 // Inputs: probe of H's w-field, start point (inside H), step length (model

@@ -1,6 +1,8 @@
 #pragma once
 // Case files (docs/case-format.md): the surfaces of a model, its materials,
 // the output folder and the parameters of each stage, as one JSON object.
+#include <Eigen/Core>
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +27,50 @@ struct CaseMaterial {
   double poisson_ratio = 0.0;
 };
 
+// Section "validation": the manufactured-solution study of `igaprep run`
+// (docs/case-format.md). The study runs on a connected set of at most
+// `patches` patches (0 = the whole model), grown from the certified patch
+// with the smallest scaled Jacobian, so its cost does not grow with the model.
+struct CaseValidation {
+  bool enabled = true;
+  int coarse_refine = 0;
+  int fine_refine = 1;
+  int patches = 4;
+  std::string solver = "cholesky";  // "cholesky" (CHOLMOD when present) or "cg"
+};
+
+// A labelled boundary, optionally only its sides whose centre (the mean of
+// the side's control points) lies in the box [lo, hi].
+struct CaseSideSelection {
+  std::string label;
+  std::optional<std::array<Eigen::Vector3d, 2>> box;
+};
+
+struct CaseFix {
+  CaseSideSelection where;
+  std::array<bool, 3> components{{true, true, true}};
+};
+
+struct CasePressure {
+  CaseSideSelection where;
+  double value = 0.0;
+};
+
+struct CaseTraction {
+  CaseSideSelection where;
+  Eigen::Vector3d value = Eigen::Vector3d::Zero();
+};
+
+// Section "load_case": a solve with the case's materials, written as result.h5.
+struct CaseLoadCase {
+  std::vector<CaseFix> fix;
+  std::vector<CasePressure> pressure;
+  std::vector<CaseTraction> traction;
+  Eigen::Vector3d body_force = Eigen::Vector3d::Zero();
+  int refine = 0;
+  std::string solver = "cholesky";
+};
+
 struct CaseFile {
   std::string path;        // the case file itself
   std::string name;        // case name (defaults to the file's folder name)
@@ -35,6 +81,9 @@ struct CaseFile {
   param::MidsurfaceOptions midsurface;  // section "midsurface" (docs/midsurface.md)
   param::VolumeParamOptions volume;     // section "decomposition" (docs/decomposition.md)
   spline::BlockFitOptions fit;          // section "fit"
+  std::vector<std::string> export_formats;  // section "export": besides model.h5, in order
+  CaseValidation validation;                // section "validation"
+  std::optional<CaseLoadCase> load_case;    // section "load_case"
 };
 
 // Reads and validates a case file. Unknown keys, wrong types, missing files

@@ -1,7 +1,8 @@
 #pragma once
 // The check stage of `igaprep run`: the report of `igaprep check`
-// (certificates, quality, fidelity, conformity, volumes) on the fitted model,
-// written as report.json / report.html, and one summary line.
+// (certificates, quality, fidelity, conformity, volumes) on the fitted model
+// and one summary line. The run adds its "pipeline" section to the report and
+// writes report.json / report.html once, at its end (write_run_report).
 #include <string>
 #include <vector>
 
@@ -19,13 +20,17 @@ struct CheckFigures {
   std::vector<double> fidelity;
   std::vector<double> volume_difference;  // per material region, (spline - input) / input
   double interface_gap = 0.0;             // relative to the model's diagonal
+  double seconds = 0.0;                   // the stage's wall-clock time
 };
 
 // Inputs: model, surfaces (outermost first), labels, check options.
-// Output: the report and its headline figures.
+// Output: the report (not written yet) and its headline figures.
 iga_check::CheckReport run_check_stage(const spline::MultiPatch& mp, const std::vector<mesh::TriMesh>& surfaces,
                                        const std::vector<std::string>& labels,
-                                       const iga_check::CheckOptions& options, const std::string& dir,
-                                       CheckFigures* figures);
+                                       const iga_check::CheckOptions& options, CheckFigures* figures);
+
+// Writes dir/report.json and dir/report.html (with the pipeline section when
+// set); returns the path of report.html.
+std::string write_run_report(const iga_check::CheckReport& report, const std::string& dir);
 
 }  // namespace igaprep::cli

@@ -48,6 +48,54 @@ ordered_json element_json(const ElementCertificate& c) {
           {"boxes", c.boxes}};
 }
 
+// Whole numbers (counts) as JSON integers, others as numbers.
+ordered_json figure(double x) {
+  if (std::isfinite(x) && x == std::floor(x) && std::abs(x) < 9.0e15) return ordered_json(static_cast<long long>(x));
+  return num(x);
+}
+
+ordered_json pipeline_json(const PipelineSection& p) {
+  ordered_json stages = ordered_json::array();
+  double total = 0.0;
+  for (const auto& s : p.stages) {
+    stages.push_back({{"name", s.name}, {"seconds", num(s.seconds)}});
+    total += s.seconds;
+  }
+  ordered_json figures = ordered_json::object();
+  for (const auto& [name, value] : p.figures) figures[name] = figure(value);
+  ordered_json j = {{"case", p.case_name},       {"case_file", p.case_file}, {"passed", p.passed},
+                    {"verdict", p.verdict},      {"stages", stages},         {"total_seconds", num(total)},
+                    {"figures", figures},        {"outputs", p.outputs}};
+  if (p.validation) {
+    const PipelineValidation& v = *p.validation;
+    ordered_json levels = ordered_json::array();
+    for (const auto& l : v.levels)
+      levels.push_back({{"refine", l.refine},
+                        {"elements", l.elements},
+                        {"unknowns", l.unknowns},
+                        {"h", num(l.h)},
+                        {"l2_error", num(l.l2_error)},
+                        {"l2_relative", num(l.l2_relative)},
+                        {"energy_relative", num(l.energy_relative)},
+                        {"seconds", num(l.seconds)}});
+    j["validation"] = {{"ran", v.ran},
+                       {"message", v.message},
+                       {"degree", v.degree},
+                       {"patches", v.patches},
+                       {"model_patches", v.model_patches},
+                       {"patch_list", v.patch_list},
+                       {"solver", v.solver},
+                       {"levels", levels},
+                       {"l2_rate", num(v.l2_rate)},
+                       {"energy_rate", num(v.energy_rate)},
+                       {"required_rate", num(v.required_rate)},
+                       {"met", v.met}};
+  } else {
+    j["validation"] = nullptr;
+  }
+  return j;
+}
+
 std::string fmt(double x) {
   if (!std::isfinite(x)) return std::isnan(x) ? "n/a" : (x > 0 ? "inf" : "-inf");
   char buf[64];
@@ -97,6 +145,50 @@ std::string svg_histogram(const Histogram& h, const std::string& title) {
   s << "<text x=\"" << left - 4 << "\" y=\"" << top + ph << "\" text-anchor=\"end\" class=\"a\">0</text>\n";
   s << "</svg>\n";
   return s.str();
+}
+
+// The run's section of report.html: verdict, stage times, figures, validation.
+std::string pipeline_html(const PipelineSection& p) {
+  std::ostringstream h;
+  h << "<h2 id=\"pipeline\">Pipeline run</h2>\n<p>Case <code>" << esc(p.case_name) << "</code> (<code>"
+    << esc(p.case_file) << "</code>)</p>\n<p id=\"pipeline-verdict\" class=\"" << (p.passed ? "pass" : "fail")
+    << "\">" << esc(p.verdict) << "</p>\n";
+  h << "<table>\n<tr><th>stage</th><th>seconds</th></tr>\n";
+  double total = 0.0;
+  for (const auto& s : p.stages) {
+    h << "<tr><td>" << esc(s.name) << "</td><td>" << fmt(s.seconds) << "</td></tr>\n";
+    total += s.seconds;
+  }
+  h << "<tr><th>total</th><th>" << fmt(total) << "</th></tr>\n</table>\n";
+  h << "<table>\n<tr><th>figure</th><th>value</th></tr>\n";
+  for (const auto& [name, value] : p.figures)
+    h << "<tr><td>" << esc(name) << "</td><td>" << fmt(value) << "</td></tr>\n";
+  h << "</table>\n";
+  if (p.validation) {
+    const PipelineValidation& v = *p.validation;
+    h << "<h3>Manufactured-solution validation</h3>\n";
+    if (!v.ran) {
+      h << "<p class=\"fail\">Not run: " << esc(v.message) << "</p>\n";
+    } else {
+      h << "<p>" << v.patches << " of " << v.model_patches << " patches, degree " << v.degree << ", solver "
+        << esc(v.solver) << ". L2 rate <b>" << fmt(v.l2_rate) << "</b> (required &ge; " << fmt(v.required_rate)
+        << "; optimal " << v.degree + 1 << "), energy rate " << fmt(v.energy_rate) << ": <span class=\""
+        << (v.met ? "pass\">met" : "fail\">NOT met") << "</span></p>\n";
+      h << "<table>\n<tr><th>refine</th><th>elements</th><th>unknowns</th><th>h</th><th>L2 error</th><th>relative "
+           "L2 error</th><th>relative energy error</th><th>seconds</th></tr>\n";
+      for (const auto& l : v.levels)
+        h << "<tr><td>" << l.refine << "</td><td>" << l.elements << "</td><td>" << l.unknowns << "</td><td>"
+          << fmt(l.h) << "</td><td>" << fmt(l.l2_error) << "</td><td>" << fmt(l.l2_relative) << "</td><td>"
+          << fmt(l.energy_relative) << "</td><td>" << fmt(l.seconds) << "</td></tr>\n";
+      h << "</table>\n";
+    }
+  }
+  if (!p.outputs.empty()) {
+    h << "<p>Files written:";
+    for (const auto& o : p.outputs) h << " <code>" << esc(o) << "</code>";
+    h << "</p>\n";
+  }
+  return h.str();
 }
 
 }  // namespace
@@ -281,6 +373,7 @@ std::string report_json(const CheckReport& r) {
                    {"collapsed_sides", collapsed},
                    {"material_volumes", mats},
                    {"regions", regions}};
+  if (r.pipeline) j["pipeline"] = pipeline_json(*r.pipeline);
   return j.dump(2) + "\n";
 }
 
@@ -301,6 +394,7 @@ std::string report_html(const CheckReport& r) {
     for (const auto& w : r.warnings) h << "<li>" << esc(w) << "</li>\n";
     h << "</ul>\n";
   }
+  if (r.pipeline) h << pipeline_html(*r.pipeline);
   h << "<h2>Patches</h2>\n<table>\n<tr><th>patch</th><th>material</th><th>elements</th><th>positive</th>"
        "<th>negative</th><th>degenerate</th><th>undecided</th><th>certified min det J &ge;</th><th>min det J "
        "(sampled)</th><th>min scaled J</th><th>mean scaled J</th><th>max condition</th><th>volume</th><th>result</th></tr>\n";

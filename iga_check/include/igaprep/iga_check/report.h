@@ -4,7 +4,9 @@
 // volumes, and a verdict; as data (CheckReport), as report.json (keys
 // documented in docs/check-report.md, stable) and as report.html (one
 // self-contained file: inline CSS and SVG, no scripts, fonts or links).
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "igaprep/iga_check/fidelity.h"
@@ -32,6 +34,48 @@ struct PatchSummary {
   bool passed = true;
 };
 
+// Optional section "pipeline": the figures of an `igaprep run` that made the
+// model (stage times, counts, the manufactured-solution validation). Absent
+// from reports of `igaprep check`.
+struct PipelineStage {
+  std::string name;      // "validate", "tetmesh", ... in the order run
+  double seconds = 0.0;  // wall clock
+};
+
+struct PipelineValidationLevel {
+  int refine = 0;
+  long long elements = 0, unknowns = 0;
+  double h = 0.0;  // largest knot span / parameter-domain length
+  double l2_error = 0.0, l2_relative = 0.0, energy_relative = 0.0;
+  double seconds = 0.0;
+};
+
+struct PipelineValidation {
+  bool ran = false;            // false: the study could not run (`message` says why)
+  std::string message;         // empty, or why it did not run
+  int degree = 0;              // smallest patch degree of the model
+  int patches = 0;             // patches the study ran on
+  int model_patches = 0;       // patches of the whole model
+  std::vector<int> patch_list; // which ones (all when patches == model_patches)
+  std::string solver;
+  std::vector<PipelineValidationLevel> levels;  // coarse, fine
+  double l2_rate = 0.0, energy_rate = 0.0;
+  double required_rate = 0.0;  // degree + 0.5
+  bool met = false;            // ran and l2_rate >= required_rate
+};
+
+struct PipelineSection {
+  std::string case_name, case_file;
+  std::vector<PipelineStage> stages;
+  // Named figures in a fixed order (patches, elements, interfaces, ...);
+  // every value a finite number.
+  std::vector<std::pair<std::string, double>> figures;
+  std::vector<std::string> outputs;  // files written, relative to the output folder
+  std::optional<PipelineValidation> validation;  // absent when disabled
+  bool passed = false;   // the check passed and the validation (when run) met its rate
+  std::string verdict;   // one line
+};
+
 struct CheckReport {
   std::string model;                        // name shown in the report (e.g. the file)
   double diagonal = 0.0;                    // bounding-box diagonal of the model
@@ -48,6 +92,7 @@ struct CheckReport {
   std::vector<int> failed_patches;
   std::vector<std::string> warnings;  // topology and volume findings (do not change `passed`)
   std::string verdict;            // one line, names the failed patches
+  std::optional<PipelineSection> pipeline;  // set by `igaprep run` only
 };
 
 // Inputs: model, input surfaces outermost first (label i = surface i; may be

@@ -63,6 +63,18 @@ double FieldProbe::value(const Eigen::Vector3d& p, int* hint) const {
   return s;
 }
 
+double FieldProbe::smooth_value(const Eigen::Vector3d& p, int* hint) const {
+  Eigen::Vector4d b;
+  const int c = locate(p, hint, &b);
+  if (c < 0) return std::numeric_limits<double>::quiet_NaN();
+  double s = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    const int v = T_(c, k);
+    s += b(k) * (u_(v) + grad_.row(v).dot((p - V_.row(v).transpose()).transpose()));
+  }
+  return s;
+}
+
 bool FieldProbe::gradient(const Eigen::Vector3d& p, int* hint, Eigen::Vector3d* g) const {
   Eigen::Vector4d b;
   const int c = locate(p, hint, &b);
@@ -82,17 +94,17 @@ Eigen::Vector3d FieldProbe::ray_to_level(const Eigen::Vector3d& start, const Eig
     return check_failed(m.str());
   };
   double lo = 0.0;
-  double u0 = value(start, &hint);
-  if (std::isnan(u0)) hint = -1, u0 = value(start, &hint);  // the hint was far away: search afresh
+  double u0 = smooth_value(start, &hint);
+  if (std::isnan(u0)) hint = -1, u0 = smooth_value(start, &hint);  // the hint was far away: search afresh
   if (!(u0 > level)) throw fail("the start point is not above the level");
   for (double t = step; t <= max_length + step; t += step) {
-    const double u = value(start + t * direction, &hint);
+    const double u = smooth_value(start + t * direction, &hint);
     if (std::isnan(u)) throw fail("the ray leaves the mesh first");
     if (u <= level) {
       double hi = t;
       for (int it = 0; it < 60 && hi - lo > 1e-12 * step; ++it) {
         const double mid = 0.5 * (lo + hi);
-        (value(start + mid * direction, &hint) > level ? lo : hi) = mid;
+        (smooth_value(start + mid * direction, &hint) > level ? lo : hi) = mid;
       }
       if (start_hint) *start_hint = hint;
       return start + hi * direction;

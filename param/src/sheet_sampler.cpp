@@ -105,6 +105,7 @@ SheetPoint SheetSampler::at(const Eigen::Vector2d& q) const {
   const double la = 1.0 - lb - lc;
   SheetPoint s;
   s.triangle = f;
+  s.bary = Eigen::Vector3d(la, lb, lc);
   s.position = la * sheet_.V.row(a) + lb * sheet_.V.row(b) + lc * sheet_.V.row(c);
   s.normal = (la * normal_.row(a) + lb * normal_.row(b) + lc * normal_.row(c)).normalized();
   s.du = la * du_.row(a) + lb * du_.row(b) + lc * du_.row(c);

@@ -69,10 +69,14 @@ StreamlineColumn trace_column(const FieldProbe& probe, const Eigen::Vector3d& st
   };
   Eigen::Vector3d x = start;
   for (int it = 0; it < max_steps; ++it) {
-    Eigen::Vector3d d1, d2, next;
+    // Classical Runge-Kutta (4th order): streamlines that start close
+    // together (the samples next to a block's edge) must stay in order.
+    Eigen::Vector3d d1, d2, d3, d4, next;
     bool inside = direction(x, &d1);
     if (inside) inside = direction(x + 0.5 * step * d1, &d2);
-    next = x + step * (inside ? d2 : d1);
+    if (inside) inside = direction(x + 0.5 * step * d2, &d3);
+    if (inside) inside = direction(x + step * d3, &d4);
+    next = inside ? Eigen::Vector3d(x + step / 6.0 * (d1 + 2.0 * d2 + 2.0 * d3 + d4)) : Eigen::Vector3d(x + step * d1);
     if (inside && probe.locate(next, &hint, nullptr) >= 0) {
       x = next;
       pts.push_back(x);

@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -108,10 +109,12 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
   // within kappa, weighted by (1 - d/kappa)^2 (1 on the boundary).
   struct Frame {
     Eigen::Vector3d position, normal, lean;
+    int triangle;
+    Eigen::Vector3d bary;
   };
   auto frame = [&](const Eigen::Vector2d& uv) {
     const SheetPoint sp = sheet.at(uv);
-    Frame f{sp.position, sp.normal, Eigen::Vector3d::Zero()};
+    Frame f{sp.position, sp.normal, Eigen::Vector3d::Zero(), sp.triangle, sp.bary};
     for (const DomainEdge& e : layout.domain_edges) {
       const double d = segment_distance(uv, e.a, e.b);
       if (d >= kappa) continue;
@@ -127,9 +130,10 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
     return f;
   };
   int hint = -1;  // the tet of the previous query: consecutive queries are close
-  // The lid point above (side = 1) or below (-1) M at f: straight along
-  // the leaning direction to w0. (Streamlines of -grad w from M would not
-  // cross, but near M's boundary they all bend to the crest.)
+  // The lid above (side = 1) or below (-1) M: straight along the leaning
+  // direction to w = w0 (of the smooth w, FieldProbe::smooth_value).
+  // Streamlines of -grad w from M would not cross, but near M's boundary
+  // they all bend to the crest.
   auto ray = [&](const Frame& f, double side) {
     const Eigen::Vector3d dir = (side * f.normal + cot_theta * f.lean).normalized();
     return probe.ray_to_level(f.position, dir, out.w0, step, 0.5 * diag, &hint);
@@ -233,7 +237,7 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
   for (std::size_t f = 0; f < core_faces.size(); ++f) {
     std::vector<StreamlineColumn> cols;
     cols.reserve(static_cast<std::size_t>(m * m));
-    for (const Eigen::Vector3d& y : core_faces[f]) cols.push_back(trace_column(probe, y, step, &hint));
+    for (const Eigen::Vector3d& y : core_faces[f]) cols.push_back(trace_column(probe, y, options.stream_step * diag, &hint));
     out.streamlines += m * m;
     for (int layer = 1; layer <= n; ++layer) {
       const double lo = static_cast<double>(layer - 1) / n;

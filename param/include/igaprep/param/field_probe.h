@@ -27,13 +27,20 @@ class FieldProbe {
   // u at p (NaN outside the mesh).
   double value(const Eigen::Vector3d& p, int* hint = nullptr) const;
 
+  // A smoother u at p: the barycentric blend of the first-order Taylor
+  // expansions at the tet's four vertices (with the vertex gradients).
+  // Exact for quadratic u where the vertex gradients are; its level sets
+  // have no kinks at the tet faces (those of the P1 u do). NaN outside.
+  double smooth_value(const Eigen::Vector3d& p, int* hint = nullptr) const;
+
   // The vertex gradients interpolated linearly at p: a continuous field,
   // whose streamlines never merge (those of the per-tet gradient do, on
   // valley edges). Returns false outside the mesh.
   bool gradient(const Eigen::Vector3d& p, int* hint, Eigen::Vector3d* g) const;
 
   // Inputs: start (u(start) > level), unit direction, level, step (march
-  // length), max_length. Output: the first point of the ray where u = level
+  // length), max_length. Output: the first point of the ray where the
+  // smooth u (smooth_value) = level
   // (the first march step that reaches it, then bisection to 1e-12 of the
   // step). Throws check_failed when the ray leaves the mesh or runs
   // max_length without reaching the level.

@@ -16,6 +16,7 @@ struct SheetPoint {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, the side the sheet's triangles face
   Eigen::Vector3d du = Eigen::Vector3d::Zero(), dv = Eigen::Vector3d::Zero();  // dX/du, dX/dv (vertex averages)
   int triangle = -1;
+  Eigen::Vector3d bary = Eigen::Vector3d::Zero();  // in that triangle
 };
 
 class SheetSampler {

@@ -27,7 +27,7 @@ struct StreamlineColumn {
 
 // Inputs: probe of H's w-field, start point (inside H), step length (model
 // units), a tet near the start (or null), maximum number of steps. Output: the column, integrated with the
-// midpoint rule along the unit direction -g/|g| until it leaves H through
+// classical Runge-Kutta rule along the unit direction -g/|g| until it leaves H through
 // its outer boundary T1 (the last point is on T1, found by bisection).
 // Throws check_failed naming the start point when the gradient vanishes or
 // the step budget runs out.

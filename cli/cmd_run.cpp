@@ -12,6 +12,7 @@
 #include "case_file.h"
 #include "case_surfaces.h"
 #include "commands.h"
+#include "igaprep/core/error.h"
 #include "igaprep/models/builtin_models.h"
 #include "stage_check.h"
 #include "stage_export.h"
@@ -129,12 +130,26 @@ void add_run_command(CLI::App& app) {
       std::printf("validation    off   (case key validation.enabled = false)\n");
     }
     if (c.load_case) {
-      const LoadCaseResult lc = run_load_case_stage(volume.model, *c.load_case, dir);
-      stages.push_back({"load_case", lc.seconds});
-      pipeline.figures.emplace_back("load_case_unknowns", static_cast<double>(lc.unknowns));
-      pipeline.figures.emplace_back("load_case_strain_energy", lc.strain_energy);
-      pipeline.figures.emplace_back("load_case_max_displacement", lc.max_displacement);
-      pipeline.outputs.push_back("result.h5");
+      StageTimer timer;
+      try {
+        const LoadCaseResult lc = run_load_case_stage(volume.model, *c.load_case, dir);
+        stages.push_back({"load_case", lc.seconds});
+        pipeline.figures.emplace_back("load_case_unknowns", static_cast<double>(lc.unknowns));
+        pipeline.figures.emplace_back("load_case_strain_energy", lc.strain_energy);
+        pipeline.figures.emplace_back("load_case_max_displacement", lc.max_displacement);
+        pipeline.outputs.push_back("result.h5");
+      } catch (const Error& e) {
+        // The model is made: keep the report of what ran, then fail (exit 1 for bad input).
+        stages.push_back({"load_case", timer.seconds()});
+        pipeline.stages = stages;
+        pipeline.verdict = std::string("ERROR: load case: ") + e.what();
+        pipeline.outputs.push_back("report.json");
+        pipeline.outputs.push_back("report.html");
+        report.pipeline = pipeline;
+        write_run_report(report, dir);
+        if (e.kind() == ErrorKind::BadInput) throw bad_input(path + ": " + e.what());
+        throw;
+      }
     }
     pipeline.stages = stages;
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -18,6 +19,7 @@ namespace igaprep::param {
 int split_sheet_along_line(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, int axis, double c, double snap) {
   for (Eigen::Index v = 0; v < uv.rows(); ++v)
     if (std::abs(uv(v, axis) - c) < snap) uv(v, axis) = c;
+
   std::vector<Eigen::Vector3d> P;
   std::vector<Eigen::Vector2d> Q;
   for (Eigen::Index v = 0; v < uv.rows(); ++v) P.push_back(sheet.V.row(v)), Q.push_back(uv.row(v));
@@ -115,6 +117,61 @@ void smooth_sheet(mesh::TriMesh& sheet, const std::vector<char>& fixed, int roun
   for (int r = 0; r < rounds; ++r) step(0.5), step(-0.53);  // Taubin: smooths without shrinking
 }
 
+int collapse_short_edges(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, const std::vector<char>& pinned, double min_length) {
+  int collapsed = 0;
+  std::vector<char> gone(static_cast<std::size_t>(sheet.V.rows()), 0);
+  std::vector<char> dead(static_cast<std::size_t>(sheet.F.rows()), 0);
+  std::vector<std::vector<int>> faces_of(static_cast<std::size_t>(sheet.V.rows()));
+  for (Eigen::Index f = 0; f < sheet.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) faces_of[sheet.F(f, k)].push_back(static_cast<int>(f));
+  auto signed_area = [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+    return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+  };
+  for (Eigen::Index f = 0; f < sheet.F.rows(); ++f) {
+    if (dead[f]) continue;
+    for (int k = 0; k < 3 && !dead[f]; ++k) {
+      int keep = sheet.F(f, k), drop = sheet.F(f, (k + 1) % 3);
+      if ((sheet.V.row(keep) - sheet.V.row(drop)).norm() >= min_length) continue;
+      if (pinned[drop] && pinned[keep]) continue;
+      if (pinned[drop]) std::swap(keep, drop);
+      // Moving `drop` onto `keep` must not fold any surviving triangle in (u, v).
+      bool ok = true;
+      for (int g : faces_of[drop]) {
+        if (dead[g]) continue;
+        bool has_keep = false;
+        Eigen::Vector2d p[3];
+        for (int j = 0; j < 3; ++j) {
+          const int v = sheet.F(g, j);
+          has_keep |= v == keep;
+          p[j] = uv.row(v == drop ? keep : v).transpose();
+        }
+        if (!has_keep && !(signed_area(p[0], p[1], p[2]) > 0.0)) ok = false;
+      }
+      if (!ok) continue;
+      for (int g : faces_of[drop]) {
+        if (dead[g]) continue;
+        bool has_keep = false;
+        for (int j = 0; j < 3; ++j) has_keep |= sheet.F(g, j) == keep;
+        if (has_keep) {
+          dead[g] = 1;
+          continue;
+        }
+        for (int j = 0; j < 3; ++j)
+          if (sheet.F(g, j) == drop) sheet.F(g, j) = keep;
+        faces_of[keep].push_back(g);
+      }
+      gone[drop] = 1;
+      ++collapsed;
+    }
+  }
+  Eigen::MatrixXi F(sheet.F.rows(), 3);
+  Eigen::Index n = 0;
+  for (Eigen::Index f = 0; f < sheet.F.rows(); ++f)
+    if (!dead[f]) F.row(n++) = sheet.F.row(f);
+  sheet.F = F.topRows(n);
+  return collapsed;
+}
+
 InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double m0, int smoothing) {
   if (!(m0 > 0.0 && m0 < 1.0)) throw bad_input("inset base surface: m0 = " + std::to_string(m0) + " is outside (0, 1)");
   const RectilinearDomain& D = polycube.domain;
@@ -131,22 +188,47 @@ InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polyc
     mean_edge += (polycube.uv.row(sheet.F(f, 0)) - polycube.uv.row(sheet.F(f, 1))).norm();
   mean_edge /= std::max<Eigen::Index>(1, sheet.F.rows());
   const double snap = 0.02 * mean_edge;
-  std::vector<std::pair<int, double>> lines{{0, d}, {0, D.width - d}, {1, d}, {1, D.height - d}};
-  for (const auto& h : D.holes) {
-    lines.push_back({0, h(0) - d});
-    lines.push_back({0, h(2) + d});
-    lines.push_back({1, h(1) - d});
-    lines.push_back({1, h(3) + d});
-  }
-  for (const auto& [axis, c] : lines) split_sheet_along_line(out.mesh, out.uv, axis, c, snap);
-
-  // The inset domain, shifted so that its outer rectangle starts at (0, 0).
-  out.domain.width = D.width - 2.0 * d;
-  out.domain.height = D.height - 2.0 * d;
+  // The cut lines: the outer sides moved in by d, the hole sides out by d,
+  // each then shifted by up to 0.2 mean edges to where it passes farthest
+  // from every vertex (a line through a vertex's neighbourhood leaves tiny
+  // edges and slivers, which TetGen meshes into flat tets).
+  auto place = [&](int axis, double c) {
+    double best = c, best_gap = -1.0;
+    for (int k = -8; k <= 8; ++k) {
+      const double trial = c + 0.025 * k * mean_edge;
+      double gap = std::numeric_limits<double>::infinity();
+      for (Eigen::Index v = 0; v < out.uv.rows(); ++v) gap = std::min(gap, std::abs(out.uv(v, axis) - trial));
+      if (gap > best_gap) best_gap = gap, best = trial;
+    }
+    split_sheet_along_line(out.mesh, out.uv, axis, best, snap);
+    return best;
+  };
+  const double left = place(0, d), right = place(0, D.width - d), bottom = place(1, d), top = place(1, D.height - d);
+  out.domain.width = right - left;
+  out.domain.height = top - bottom;
   out.domain.hole_loop = D.hole_loop;
-  for (const auto& h : D.holes) out.domain.holes.emplace_back(h(0) - 2.0 * d, h(1) - 2.0 * d, h(2), h(3));
-  for (Eigen::Index v = 0; v < out.uv.rows(); ++v) out.uv.row(v) -= Eigen::RowVector2d(d, d);
+  for (const auto& h : D.holes) {
+    const double hl = place(0, h(0) - d), hr = place(0, h(2) + d), hb = place(1, h(1) - d), ht = place(1, h(3) + d);
+    out.domain.holes.emplace_back(hl - left, hb - bottom, hr - left, ht - bottom);
+  }
+  // The inset domain, shifted so that its outer rectangle starts at (0, 0).
+  for (Eigen::Index v = 0; v < out.uv.rows(); ++v) out.uv.row(v) -= Eigen::RowVector2d(left, bottom);
 
+  // Tiny edges left where two cut lines cross inside a triangle or pass
+  // close to a vertex: collapsed (vertices on the cut lines stay put).
+  {
+    std::vector<char> pinned(static_cast<std::size_t>(out.uv.rows()), 0);
+    std::vector<double> us{0.0, out.domain.width}, vs{0.0, out.domain.height};
+    for (const auto& h : out.domain.holes) us.push_back(h(0)), us.push_back(h(2)), vs.push_back(h(1)), vs.push_back(h(3));
+    for (Eigen::Index v = 0; v < out.uv.rows(); ++v)
+      for (int axis = 0; axis < 2; ++axis)
+        for (double c : axis == 0 ? us : vs)
+          if (std::abs(out.uv(v, axis) - c) <= 1e-12 * (1.0 + std::abs(c))) pinned[v] = 1;
+    double mean3 = 0.0;
+    for (Eigen::Index f = 0; f < out.mesh.F.rows(); ++f) mean3 += (out.mesh.V.row(out.mesh.F(f, 0)) - out.mesh.V.row(out.mesh.F(f, 1))).norm();
+    mean3 /= std::max<Eigen::Index>(1, out.mesh.F.rows());
+    collapse_short_edges(out.mesh, out.uv, pinned, 0.1 * mean3);
+  }
   // Keep the triangles inside, drop unused vertices.
   std::vector<int> keep;
   for (Eigen::Index f = 0; f < out.mesh.F.rows(); ++f) {

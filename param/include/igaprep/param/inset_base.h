@@ -33,6 +33,11 @@ int split_sheet_along_line(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, int axis, 
 // holes and between a hole and the outside.
 double narrowest_band(const RectilinearDomain& domain);
 
+// Collapses every edge shorter than min_length (3D) whose triangles stay
+// positively oriented in (u, v) after moving one end onto the other; a
+// pinned vertex is never moved. Returns the number of edges collapsed.
+int collapse_short_edges(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, const std::vector<char>& pinned, double min_length);
+
 // Inputs: M0trim with its 2D polycube, m0 in (0, 1): d = m0 x half the
 // narrowest band of the domain (its width, its height, and the gaps between
 // holes and between a hole and the outside); rounds of Taubin smoothing of

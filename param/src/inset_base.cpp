@@ -192,7 +192,10 @@ InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polyc
   // each then shifted by up to 0.2 mean edges to where it passes farthest
   // from every vertex (a line through a vertex's neighbourhood leaves tiny
   // edges and slivers, which TetGen meshes into flat tets).
+  std::map<std::pair<int, double>, double> placed;  // lines with one value are placed once (aligned hole sides stay aligned)
   auto place = [&](int axis, double c) {
+    for (const auto& [key, value] : placed)
+      if (key.first == axis && std::abs(key.second - c) <= 1e-12 * (1.0 + std::abs(c))) return value;
     double best = c, best_gap = -1.0;
     for (int k = -8; k <= 8; ++k) {
       const double trial = c + 0.025 * k * mean_edge;
@@ -201,6 +204,7 @@ InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polyc
       if (gap > best_gap) best_gap = gap, best = trial;
     }
     split_sheet_along_line(out.mesh, out.uv, axis, best, snap);
+    placed[{axis, c}] = best;
     return best;
   };
   const double left = place(0, d), right = place(0, D.width - d), bottom = place(1, d), top = place(1, D.height - d);

@@ -158,7 +158,8 @@ iga_check::PipelineValidation run_validation_stage(const spline::MultiPatch& mp,
     mo.solver = options.solver == "cholesky" ? iga_check::LinearSolver::Cholesky
                                              : iga_check::LinearSolver::ConjugateGradient;
     try {
-      const spline::MultiPatch sub = v.patches == v.model_patches ? mp : validation_submodel(mp, v.patch_list);
+      // Also for the whole model: collapsed sides then get the cut label.
+      const spline::MultiPatch sub = validation_submodel(mp, v.patch_list);
       const iga_check::ManufacturedStudy st = iga_check::manufactured_study(sub, mo);
       v.ran = true;
       for (const auto& l : st.levels) {

@@ -47,9 +47,9 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
   const spline::BlockFitOptions fit_options = c.fit;
   const param::VolumeParam vp =
       param::build_volume_param(H, w, layout, spline::block_sample_params(fit_options), c.volume);
-  std::printf("param      %7.2f s  strategy 2, w0 = %.3f: %zu blocks (%d core faces x %d layers + core), %d "
+  std::printf("param      %7.2f s  strategy %d, w0 = %.3f: %zu blocks (%d core faces x %d layers + core), %d "
               "streamlines, %d folded sample cells\n",
-              t_param.seconds(), vp.w0, vp.blocks.size(), vp.core_faces, vp.layers, vp.streamlines, vp.folded_cells);
+              t_param.seconds(), c.volume.strategy, vp.w0, vp.blocks.size(), vp.core_faces, vp.layers, vp.streamlines, vp.folded_cells);
   std::fflush(stdout);
 
   if (vp.folded_cells > 0) {
@@ -95,7 +95,7 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
     for (int s = 0; s < 6; ++s) {
       const int label = vp.blocks[p].side_label[s];
       if (label >= 0 && !on_interface[p][s]) mp.boundaries.push_back({static_cast<int>(p), s + 1, label});
-      else if (!on_interface[p][s]) ++out.unmatched_sides;
+      else if (!on_interface[p][s] && !vp.blocks[p].collapsed[s]) ++out.unmatched_sides;
     }
   std::printf("fit        %7.2f s  %zu patches, degree %d, %d elements per direction; %zu interfaces (%d stitched "
               "points, max move %.1e), %zu T1 sides, %d unmatched sides, %d layer(s)\n",

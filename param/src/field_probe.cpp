@@ -79,6 +79,18 @@ bool FieldProbe::gradient(const Eigen::Vector3d& p, int* hint, Eigen::Vector3d* 
   Eigen::Vector4d b;
   const int c = locate(p, hint, &b);
   if (c < 0) return false;
+  bool on_ridge = false;
+  for (int k = 0; k < 4; ++k) on_ridge |= u_(T_(c, k)) >= ridge_;
+  if (on_ridge) {  // the tet's own (P1) gradient: solve E^T g = du
+    Eigen::Matrix3d E;
+    Eigen::Vector3d du;
+    for (int k = 0; k < 3; ++k) {
+      E.row(k) = V_.row(T_(c, k + 1)) - V_.row(T_(c, 0));
+      du(k) = u_(T_(c, k + 1)) - u_(T_(c, 0));
+    }
+    *g = E.fullPivLu().solve(du);
+    return true;
+  }
   g->setZero();
   for (int k = 0; k < 4; ++k) *g += b(k) * grad_.row(T_(c, k)).transpose();
   return true;

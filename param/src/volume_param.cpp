@@ -59,6 +59,7 @@ void orient_block(SampledBlock& b, int m) {
     b.samples = s;
     b.mirrored = true;
     std::swap(b.side_label[0], b.side_label[1]);
+    std::swap(b.collapsed[0], b.collapsed[1]);
   }
   for (int k = 0; k + 1 < m; ++k)
     for (int j = 0; j + 1 < m; ++j)
@@ -78,6 +79,8 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
                                const std::vector<double>& params, const VolumeParamOptions& options) {
   const int n = H.num_surfaces;
   const int m = static_cast<int>(params.size());
+  if (options.strategy != 1 && options.strategy != 2)
+    throw bad_input("volume parameterization: strategy must be 1 or 2, got " + std::to_string(options.strategy));
   if (m < 3 || params.front() != 0.0 || params.back() != 1.0)
     throw bad_input("volume parameterization: need at least 3 sample parameters from 0 to 1");
   if (!(options.theta > 0.05 && options.theta < 1.5))
@@ -99,7 +102,8 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
   const Eigen::MatrixXi& T = H.tets.T;
   const TetTopology topo = build_tet_topology(T, V.rows());
   const Eigen::MatrixXd grad = vertex_gradients(V, T, w.w);
-  const FieldProbe probe(V, T, topo, w.w, grad);
+  FieldProbe probe(V, T, topo, w.w, grad);
+  probe.set_ridge(1.0 - 1e-12);
   const double diag = (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm();
   const double step = options.ray_step * diag;
   const RectilinearDomain& D = layout.domain;
@@ -143,8 +147,15 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
 
   // Per rectangle: M, the top and the bottom of the core on an m x m grid.
   struct RectGrid {
-    Grid2 base, top, bottom;
+    Grid2 base, top, bottom;    // top, bottom: the lids (strategy 2) or the streamline starts (strategy 1)
     std::vector<Eigen::Vector2d> uv;
+  };
+  const bool strategy1 = options.strategy == 1;
+  // Strategy 1 starts its streamlines this far from M along D+ and D-
+  // (w = 1 on M: the gradient there is two-sided).
+  const double offset = 2.0 * step;
+  auto start_point = [&](const Frame& f, double side) {
+    return Eigen::Vector3d(f.position + offset * (side * f.normal + cot_theta * f.lean).normalized());
   };
   std::vector<RectGrid> rect(layout.rectangles.size());
   for (std::size_t r = 0; r < layout.rectangles.size(); ++r) {
@@ -156,8 +167,8 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
         const Frame f = frame(uv);
         g.uv.push_back(uv);
         g.base.push_back(f.position);
-        g.top.push_back(ray(f, 1.0));
-        g.bottom.push_back(ray(f, -1.0));
+        g.top.push_back(strategy1 ? start_point(f, 1.0) : ray(f, 1.0));
+        g.bottom.push_back(strategy1 ? start_point(f, -1.0) : ray(f, -1.0));
       }
   }
   // Grid index of position k along side s of a rectangle (box_sides order).
@@ -170,7 +181,14 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
     }
   };
 
-  std::vector<Grid2> core_faces;  // outer faces of the core, each m x m
+  // The faces the shell grows from, each m x m: the outer faces of the core
+  // (strategy 2), or M's two sides and the collapsed crest fans (strategy 1)
+  // with the points the streamlines start from.
+  struct ShellBase {
+    Grid2 face, start;
+    bool collapsed = false;  // the face is a curve (strategy 1 crest)
+  };
+  std::vector<ShellBase> core_faces;
   auto add_block = [&](BlockKind kind, int source, int layer, int material, Eigen::MatrixXd samples, int t1_side) {
     SampledBlock b;
     b.kind = kind;
@@ -184,17 +202,36 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
     out.blocks.push_back(std::move(b));
   };
   const int core_material = n - 1;
-  for (std::size_t r = 0; r < rect.size(); ++r) {
+  if (strategy1) {
+    for (std::size_t r = 0; r < rect.size(); ++r) {
+      core_faces.push_back({rect[r].base, rect[r].top});
+      core_faces.push_back({rect[r].base, rect[r].bottom});
+    }
+    for (std::size_t c = 0; c < layout.crests.size(); ++c) {
+      const CrestSegment& seg = layout.crests[c];
+      const RectGrid& g = rect[static_cast<std::size_t>(seg.rectangle)];
+      ShellBase fan;
+      fan.collapsed = true;
+      for (int j = 0; j < m; ++j)
+        for (int k = 0; k < m; ++k) {
+          const int q = side_index(seg.side, k);
+          fan.face.push_back(g.base[q]);
+          fan.start.push_back(lerp(g.top[q], g.bottom[q], params[j]));  // the fan from D+ through the binormal to D-
+        }
+      core_faces.push_back(std::move(fan));
+    }
+  }
+  for (std::size_t r = 0; r < rect.size() && !strategy1; ++r) {
     for (const bool top : {true, false}) {
       Eigen::MatrixXd s(m * m * m, 3);
       const Grid2& lid = top ? rect[r].top : rect[r].bottom;
       for (int k = 0; k < m; ++k)
         for (int q = 0; q < m * m; ++q) s.row(q + m * m * k) = lerp(rect[r].base[q], lid[q], params[k]).transpose();
       add_block(top ? BlockKind::CoreTop : BlockKind::CoreBottom, static_cast<int>(r), 0, core_material, std::move(s), -1);
-      core_faces.push_back(lid);
+      core_faces.push_back({lid, lid});
     }
   }
-  for (std::size_t c = 0; c < layout.crests.size(); ++c) {
+  for (std::size_t c = 0; c < layout.crests.size() && !strategy1; ++c) {
     const CrestSegment& seg = layout.crests[c];
     const RectGrid& g = rect[static_cast<std::size_t>(seg.rectangle)];
     Grid2 P0(m), P1(m), P2(m), P3(m);
@@ -227,8 +264,8 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
         lower[k + m * j] = lerp(P1[k], P2[k], params[j]);  // the b = 1 face, (tau, a)
       }
     add_block(BlockKind::Crest, static_cast<int>(c), 0, core_material, std::move(s), -1);
-    core_faces.push_back(upper);
-    core_faces.push_back(lower);
+    core_faces.push_back({upper, upper});
+    core_faces.push_back({lower, lower});
   }
   out.rectangles = static_cast<int>(layout.rectangles.size());
   out.crests = static_cast<int>(layout.crests.size());
@@ -239,7 +276,8 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
   for (std::size_t f = 0; f < core_faces.size(); ++f) {
     std::vector<StreamlineColumn> cols;
     cols.reserve(static_cast<std::size_t>(m * m));
-    for (const Eigen::Vector3d& y : core_faces[f]) cols.push_back(trace_column(probe, y, options.stream_step * diag, &hint));
+    for (const Eigen::Vector3d& y : core_faces[f].start)
+      cols.push_back(trace_column(probe, y, options.stream_step * diag, &hint));
     out.streamlines += m * m;
     for (int layer = 1; layer <= n; ++layer) {
       const double lo = static_cast<double>(layer - 1) / n;
@@ -253,12 +291,13 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
         for (int k = 0; k < m; ++k) {
           Eigen::Vector3d x;
           if (k == 0) x = col.at_arc(s_lo);
-          else if (k == m - 1) x = layer == n ? core_faces[f][q] : col.at_arc(s_hi);
+          else if (k == m - 1) x = layer == n ? core_faces[f].face[q] : col.at_arc(s_hi);
           else x = col.at_arc(s_lo + params[k] * (s_hi - s_lo));
           s.row(q + m * m * k) = x.transpose();
         }
       }
       add_block(BlockKind::Shell, static_cast<int>(f), layer, layer - 1, std::move(s), layer == 1 ? 4 : -1);
+      if (layer == n && core_faces[f].collapsed) out.blocks.back().collapsed[5] = true;
     }
     progress.update(f + 1);
   }

@@ -4,6 +4,8 @@
 // the walk that finds the tet holding a point. The volume layout uses it to
 // find the iso-surface T(n+1) = {w = w0} around the base surface M and to
 // follow -grad w out to T1 (streamline_column.h).
+#include <limits>
+
 #include <Eigen/Core>
 
 #include "igaprep/param/tet_topology.h"
@@ -35,8 +37,14 @@ class FieldProbe {
 
   // The vertex gradients interpolated linearly at p: a continuous field,
   // whose streamlines never merge (those of the per-tet gradient do, on
-  // valley edges). Returns false outside the mesh.
+  // valley edges). In a tet with a vertex on the ridge (set_ridge) the
+  // tet's own gradient is used instead: the vertex gradient of a ridge
+  // vertex averages both sides and points nowhere. Returns false outside
+  // the mesh.
   bool gradient(const Eigen::Vector3d& p, int* hint, Eigen::Vector3d* g) const;
+
+  // Vertices with u >= value form a ridge (the base surface M for w = 1).
+  void set_ridge(double value) { ridge_ = value; }
 
   // Inputs: start (u(start) > level), unit direction, level, step (march
   // length), max_length. Output: the first point of the ray where the
@@ -55,6 +63,7 @@ class FieldProbe {
   const TetTopology& topo_;
   const Eigen::VectorXd& u_;
   const Eigen::MatrixXd& grad_;
+  double ridge_ = std::numeric_limits<double>::infinity();
 };
 
 }  // namespace igaprep::param

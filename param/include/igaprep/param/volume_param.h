@@ -12,6 +12,11 @@
 // from M's plane: the three blocks meet at M's boundary at 180 - theta,
 // 180 - theta and 2 theta degrees (interior extraordinary edges, valence 3).
 //
+// Strategy 1 (no core): the shell grows from M itself, its columns starting
+// next to M along D+ and D-, and each crest is a fan of streamlines from M's
+// boundary, from D+ through the binormal to D-: a block whose side on M is
+// collapsed to M's boundary curve (degenerate, as the paper says).
+//
 // Shell (between T1 and T(n+1)): every outer face of the core (the top and
 // bottom faces of the rectangle blocks, the two outer faces of each crest
 // block) is carried out to T1 along streamlines of -grad w, one block per
@@ -52,6 +57,7 @@ struct SampledBlock {
   // Per side (G+Smo order u0, u1, v0, v1, w0, w1): the surface label it lies
   // on when it is a boundary of the model (0 = T1), else -1 (an interface).
   std::array<int, 6> side_label{{-1, -1, -1, -1, -1, -1}};
+  std::array<bool, 6> collapsed{};  // sides that are a curve (strategy 1: the crest fans at M's boundary)
   bool mirrored = false;
   int folded = 0;  // sample-grid cells with a non-positive corner volume  // the first direction was reversed for a positive orientation
 };

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 
 #include "cli/cli_runner.h"
@@ -190,6 +191,61 @@ TEST_F(RunSphere2, LoadCaseResultCarriesItsFigures) {
   const json f = report().at("pipeline").at("figures");
   EXPECT_NEAR(energy, f.at("load_case_strain_energy").get<double>(), 1e-12 * energy);
   EXPECT_NEAR(umax, f.at("load_case_max_displacement").get<double>(), 1e-12 * umax);
+}
+
+bool has_type(const json& v, const std::string& type) {
+  if (type == "string") return v.is_string();
+  if (type == "integer") return v.is_number_integer();
+  if (type == "number") return v.is_number();
+  if (type == "boolean") return v.is_boolean();
+  if (type == "array") return v.is_array();
+  if (type == "object") return v.is_object();
+  if (type == "object or null") return v.is_object() || v.is_null();
+  ADD_FAILURE() << "unknown documented type " << type;
+  return false;
+}
+
+// Every key of the pipeline table in docs/check-report.md ("name[]" = every
+// element of an array) is present in the run's report with its type.
+void check_documented(const json& j, const std::vector<std::string>& seg, std::size_t i, const std::string& key,
+                      const std::string& type, int* seen) {
+  if (i == seg.size()) {
+    ++*seen;
+    EXPECT_TRUE(has_type(j, type)) << key << " should be " << type << ", is " << j.dump().substr(0, 80);
+    return;
+  }
+  std::string s = seg[i];
+  const bool each = s.size() > 2 && s.substr(s.size() - 2) == "[]";
+  if (each) s = s.substr(0, s.size() - 2);
+  ASSERT_TRUE(j.is_object() && j.contains(s)) << "report.json lacks documented key pipeline." << key;
+  if (!each) return check_documented(j.at(s), seg, i + 1, key, type, seen);
+  for (const auto& e : j.at(s)) check_documented(e, seg, i + 1, key, type, seen);
+}
+
+TEST_F(RunSphere2, DocumentedPipelineKeysArePresent) {
+  std::ifstream in(std::string(IGAPREP_SOURCE_DIR) + "/docs/check-report.md");
+  const std::regex row(R"(^\| ([a-z_0-9.\[\]]+) \| ([a-z ]+) \|)");
+  const json p = report().at("pipeline");
+  bool inside = false;
+  int rows = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("### The `pipeline` section", 0) == 0) inside = true;
+    if (line.rfind("## report.html", 0) == 0) inside = false;
+    std::smatch m;
+    if (!inside || !std::regex_search(line, m, row)) continue;
+    ++rows;
+    std::vector<std::string> seg;
+    std::stringstream ss(m[1].str());
+    for (std::string s; std::getline(ss, s, '.');) seg.push_back(s);
+    int seen = 0;
+    check_documented(p, seg, 0, m[1].str(), m[2].str(), &seen);
+    EXPECT_GT(seen, 0) << m[1].str();
+  }
+  EXPECT_GT(rows, 40);
+  // The rows with a placeholder (LABEL, I), for sphere2's surfaces.
+  for (const char* k : {"fidelity_relative_outer", "fidelity_relative_inner", "volume_difference_region_0",
+                        "volume_difference_region_1"})
+    EXPECT_TRUE(p.at("figures").contains(k)) << k;
 }
 
 TEST_F(RunSphere2, HtmlShowsThePipeline) {

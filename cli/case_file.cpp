@@ -303,7 +303,24 @@ CaseFile read_case_file(const std::string& path) {
   if (const json* f = r.find("fit")) c.fit = parse_fit_options(*f, path);
   if (const json* e = r.find("export")) c.export_formats = read_export(*e, path);
   if (const json* v = r.find("validation")) c.validation = read_validation(*v, path);
-  if (const json* l = r.find("load_case")) c.load_case = read_load_case(*l, path);
+  if (const json* l = r.find("load_case")) {
+    c.load_case = read_load_case(*l, path);
+    // Labels are the surfaces' (whether a side carries it is known after the fit).
+    auto known = [&](const CaseSideSelection& w, const std::string& key) {
+      std::string list;
+      for (const auto& s : c.surfaces) {
+        if (s.label == w.label) return;
+        list += (list.empty() ? "" : ", ") + s.label;
+      }
+      r.fail("'" + key + ".label': '" + w.label + "' is not a surface label (labels: " + list + ")");
+    };
+    for (std::size_t i = 0; i < c.load_case->fix.size(); ++i)
+      known(c.load_case->fix[i].where, "load_case.fix[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < c.load_case->pressure.size(); ++i)
+      known(c.load_case->pressure[i].where, "load_case.pressure[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < c.load_case->traction.size(); ++i)
+      known(c.load_case->traction[i].where, "load_case.traction[" + std::to_string(i) + "]");
+  }
   c.midsurface.tetgen = c.tetmesh;
   r.refuse_unknown();
   return c;

@@ -6,13 +6,17 @@ namespace igaprep::cli {
 
 param::VolumeParamOptions parse_decomposition_options(const nlohmann::json& s, const std::string& file) {
   if (!s.is_object()) case_fail(file, "'decomposition' must be an object");
-  refuse_unknown_keys(s, {"blend", "crest_reach", "strategy", "theta", "w0"}, "decomposition", file);
+  refuse_unknown_keys(s, {"blend", "crest_reach", "inset", "smoothing", "strategy", "theta", "w0"}, "decomposition", file);
   param::VolumeParamOptions o;
   o.strategy = static_cast<int>(case_number(s, "strategy", o.strategy, 1, 2, "decomposition", file));
   if (s.contains("strategy") && !s["strategy"].is_number_integer())
     case_fail(file, "'decomposition.strategy' must be 1 or 2");
   o.theta = case_number(s, "theta", o.theta, 0.05, 1.5, "decomposition", file);
   o.w0 = case_number(s, "w0", o.w0, 0.0, 1.0, "decomposition", file);
+  if (s.contains("smoothing") && !s["smoothing"].is_number_integer())
+    case_fail(file, "'decomposition.smoothing' must be an integer");
+  o.smoothing = static_cast<int>(case_number(s, "smoothing", o.smoothing, 0, 100, "decomposition", file));
+  o.inset = case_number(s, "inset", o.inset, 0.05, 0.95, "decomposition", file);
   o.crest_reach = case_number(s, "crest_reach", o.crest_reach, 0.1, 2.0, "decomposition", file);
   o.blend = case_number(s, "blend", o.blend, 0.01, 4.0, "decomposition", file);
   return o;

@@ -1,7 +1,8 @@
 #pragma once
 // The "decomposition" and "fit" sections of a case file (docs/case-format.md):
-//   "decomposition": {"strategy": 2, "theta": 0.785, "w0": 0.75, "blend": 0.25},
-//   "fit": {"degree": 3, "elements": 4}
+//   "decomposition": {"strategy": 2, "theta": 0.785, "w0": 0.75, "inset": 0.3, "smoothing": 5,
+//                     "blend": 0.5, "crest_reach": 1.0},
+//   "fit": {"degree": 3, "elements": 6, "oversample": 2}
 #include <string>
 
 #include <nlohmann/json.hpp>

@@ -20,7 +20,7 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
   const int n = static_cast<int>(surfaces.meshes.size());
 
   StageTimer t_decomp;
-  const param::InsetBase base = param::inset_base_surface(mid.m0trim.mesh, mid.polycube, c.midsurface.m0, std::getenv("IGAPREP_SMOOTH") ? std::atoi(std::getenv("IGAPREP_SMOOTH")) : 20);
+  const param::InsetBase base = param::inset_base_surface(mid.m0trim.mesh, mid.polycube, c.volume.inset, c.volume.smoothing);
   if (keep_intermediate) {
     fs::create_directories(dir);
     mesh::VtuMesh v = mesh::vtu_triangles(base.mesh);

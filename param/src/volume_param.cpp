@@ -103,7 +103,7 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
   const TetTopology topo = build_tet_topology(T, V.rows());
   const Eigen::MatrixXd grad = vertex_gradients(V, T, w.w);
   FieldProbe probe(V, T, topo, w.w, grad);
-  probe.set_ridge(1.0 - 1e-12);
+  if (options.strategy == 1) probe.set_ridge(1.0 - 1e-12);  // its streamlines start next to M
   const double diag = (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm();
   const double step = options.ray_step * diag;
   const RectilinearDomain& D = layout.domain;

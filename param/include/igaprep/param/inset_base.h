@@ -38,7 +38,8 @@ double narrowest_band(const RectilinearDomain& domain);
 // pinned vertex is never moved. Returns the number of edges collapsed.
 int collapse_short_edges(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, const std::vector<char>& pinned, double min_length);
 
-// Inputs: M0trim with its 2D polycube, m0 in (0, 1): d = m0 x half the
+// Inputs: M0trim with its 2D polycube, m0 in (0, 1) (the case's
+// decomposition.inset): d = m0 x half the
 // narrowest band of the domain (its width, its height, and the gaps between
 // holes and between a hole and the outside); rounds of Taubin smoothing of
 // the 3D positions along the normals (the domain's corners fixed). Output: the inset sheet.

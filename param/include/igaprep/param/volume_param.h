@@ -37,6 +37,8 @@ namespace igaprep::param {
 
 struct VolumeParamOptions {
   int strategy = 2;  // section 6: 2 (default) or 1
+  double inset = 0.3;  // base surface: M0trim inset by this fraction of half its narrowest band (inset_base.h)
+  int smoothing = 5;   // rounds of Taubin smoothing of the inset base surface (more: TetGen saw M intersect itself on torus3)
   double theta = 0.78539816339744831;  // pi/4: angle of S+ and S- from M's plane at its boundary
   double w0 = -1.0;     // iso-value of T(n+1) in ((n - 1)/n, 1); < 0: midway, at least 0.75
   double blend = 0.5;  // the rays lean out within this fraction of the narrowest band of M's domain from its boundary

@@ -1,7 +1,6 @@
 #include "stage_volume.h"
 
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 
 #include "igaprep/mesh/write_vtu.h"
@@ -65,12 +64,22 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
   spline::MultiPatch& mp = out.model;
   for (const auto& s : c.surfaces) mp.labels.push_back(s.label);
   for (const auto& m : c.materials) mp.materials.push_back({m.name, m.young_modulus, m.poisson_ratio});
-  if (const char* dump = std::getenv("IGAPREP_DUMP_BLOCK")) {  // debugging aid: one block's samples as text
-    std::FILE* f = std::fopen((fs::path(dir) / "block_samples.txt").string().c_str(), "w");
-    for (const auto& b : vp.blocks)
-      for (Eigen::Index i = 0; i < b.samples.rows(); ++i)
-        std::fprintf(f, "%.17g %.17g %.17g\n", b.samples(i, 0), b.samples(i, 1), b.samples(i, 2));
-    std::fclose(f);
+  if (keep_intermediate) {  // every block's sample points, with the block index
+    Eigen::Index total = 0;
+    for (const auto& b : vp.blocks) total += b.samples.rows();
+    mesh::VtuMesh v;
+    v.points.resize(total, 3);
+    Eigen::VectorXi block(total);
+    Eigen::Index row = 0;
+    for (std::size_t i = 0; i < vp.blocks.size(); ++i) {
+      const auto& S = vp.blocks[i].samples;
+      v.points.middleRows(row, S.rows()) = S;
+      block.segment(row, S.rows()).setConstant(static_cast<int>(i));
+      for (Eigen::Index k = 0; k < S.rows(); ++k) v.add_cell(mesh::kVtuVertex, {static_cast<int>(row + k)});
+      row += S.rows();
+    }
+    v.add_point_data("block", block);
+    mesh::write_vtu((fs::path(dir) / "decomposition_samples.vtu").string(), v);
   }
   for (const auto& b : vp.blocks) {
     spline::Patch p = spline::fit_block(b.samples, fit_options);

@@ -170,6 +170,93 @@ TEST(SplitSheetAlongLine, LineThroughVerticesAndSnap) {
   EXPECT_NEAR(uv_area(m2, uv2), 1.0, 1e-12);
 }
 
+// ---------------------------------------------------------------- collapse_short_edges, smooth_sheet
+
+TEST(CollapseShortEdges, OneShortEdgeOnAGrid) {
+  const int n = 6;
+  const double h = 1.0 / n;
+  auto id = [&](int i, int j) { return i + (n + 1) * j; };
+  mesh::TriMesh base = param_test::square_tris(n);
+  const int P = id(2, 2), Q = id(3, 2);
+  base.V(P, 0) += 0.45 * h;  // edge P-Q is 0.55 h long, every other edge at least h
+  const Eigen::MatrixXd uv0 = base.V.leftCols(2);
+  std::vector<char> none(static_cast<std::size_t>(base.V.rows()), 0);
+
+  auto uses = [](const mesh::TriMesh& m, int v) { return (m.F.array() == v).any(); };
+  {
+    mesh::TriMesh m = base;
+    Eigen::MatrixXd uv = uv0;
+    EXPECT_EQ(collapse_short_edges(m, uv, none, 0.6 * h), 1);
+    EXPECT_EQ(m.F.rows(), base.F.rows() - 2);  // the two triangles of the edge
+    EXPECT_NE(uses(m, P), uses(m, Q));         // one end is gone
+    EXPECT_GT(min_uv_area(m, uv), 0.0);
+    EXPECT_NEAR(uv_area(m, uv), 1.0, 1e-12);    // still a triangulation of the square
+    EXPECT_EQ(describe_sheet_problem(analyze_sheet(m.F, m.V.rows()), 1, "collapsed grid"), "");
+    EXPECT_EQ(m.V, base.V);  // vertices are not moved, only re-used
+  }
+  {  // A pinned end is never the one that goes.
+    mesh::TriMesh m = base;
+    Eigen::MatrixXd uv = uv0;
+    std::vector<char> pin = none;
+    pin[static_cast<std::size_t>(Q)] = 1;
+    EXPECT_EQ(collapse_short_edges(m, uv, pin, 0.6 * h), 1);
+    EXPECT_TRUE(uses(m, Q));
+    EXPECT_FALSE(uses(m, P));
+    EXPECT_GT(min_uv_area(m, uv), 0.0);
+    pin = none;
+    pin[static_cast<std::size_t>(P)] = 1;
+    m = base;
+    uv = uv0;
+    EXPECT_EQ(collapse_short_edges(m, uv, pin, 0.6 * h), 1);
+    EXPECT_TRUE(uses(m, P));
+    EXPECT_FALSE(uses(m, Q));
+  }
+  {  // Both ends pinned, or the threshold below the edge: nothing.
+    mesh::TriMesh m = base;
+    Eigen::MatrixXd uv = uv0;
+    std::vector<char> pin = none;
+    pin[static_cast<std::size_t>(P)] = pin[static_cast<std::size_t>(Q)] = 1;
+    EXPECT_EQ(collapse_short_edges(m, uv, pin, 0.6 * h), 0);
+    EXPECT_EQ(m.F, base.F);
+    EXPECT_EQ(collapse_short_edges(m, uv, none, 0.5 * h), 0);
+    EXPECT_EQ(m.F, base.F);
+  }
+}
+
+TEST(SmoothSheet, FlattensBumpsKeepsFixedAndPlanar) {
+  mesh::TriMesh flat = param_test::square_tris(8, 0.2, 4);
+  std::vector<char> fixed(static_cast<std::size_t>(flat.V.rows()), 0);
+  for (Eigen::Index v = 0; v < flat.V.rows(); ++v)
+    fixed[static_cast<std::size_t>(v)] = flat.V(v, 0) == 0.0 || flat.V(v, 0) == 1.0 || flat.V(v, 1) == 0.0 || flat.V(v, 1) == 1.0;
+  // A planar sheet does not move at all.
+  mesh::TriMesh m = flat;
+  smooth_sheet(m, fixed, 10);
+  EXPECT_EQ(m.V, flat.V);
+
+  // Bumps on the interior vertices: smoothed out along the normals.
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> U(-0.02, 0.02);
+  mesh::TriMesh bumpy = flat;
+  for (Eigen::Index v = 0; v < bumpy.V.rows(); ++v)
+    if (!fixed[static_cast<std::size_t>(v)]) bumpy.V(v, 2) = U(rng);
+  m = bumpy;
+  smooth_sheet(m, fixed, 10);
+  double before = 0.0, after = 0.0, drift = 0.0, moved_z = 0.0;
+  for (Eigen::Index v = 0; v < m.V.rows(); ++v) {
+    if (fixed[static_cast<std::size_t>(v)]) {
+      EXPECT_EQ((m.V.row(v) - bumpy.V.row(v)).norm(), 0.0) << "fixed vertex " << v;
+      continue;
+    }
+    before = std::max(before, std::abs(bumpy.V(v, 2)));
+    after = std::max(after, std::abs(m.V(v, 2)));
+    drift = std::max(drift, (m.V.row(v).leftCols(2) - bumpy.V.row(v).leftCols(2)).norm());
+    moved_z = std::max(moved_z, std::abs(m.V(v, 2) - bumpy.V(v, 2)));
+  }
+  EXPECT_LT(after, 0.5 * before);
+  EXPECT_GT(moved_z, 0.0);
+  EXPECT_LT(drift, 0.1 * moved_z);  // moves are (nearly) normal to the nearly flat sheet
+}
+
 // ---------------------------------------------------------------- narrowest_band, inset_base_surface
 
 TEST(NarrowestBand, WidthHeightAndGaps) {
@@ -260,6 +347,66 @@ TEST(InsetBaseSurface, SquareSheetNoHole) {
 TEST(InsetBaseSurface, SquareSheetOneHole) {
   // band = 1 (hole to the top and bottom), d = 0.5 * 0.25 = 0.125.
   check_inset({4.0, 3.0, 0.25, {Eigen::Vector4d(1.5, 1.0, 2.5, 2.0)}, 0.25});
+}
+
+TEST(InsetBaseSurface, AlignedHolesStayAligned) {
+  // Two holes with common bottom and top lines: band = 0.5 (hole 1 to the
+  // left side), d = 0.125. The grown holes still share those lines exactly,
+  // so the layout has 5 x 3 cells - 2 holes = 13 rectangles, and 16 outer +
+  // 8 hole crests.
+  const std::vector<Eigen::Vector4d> holes{Eigen::Vector4d(0.5, 1.0, 1.5, 2.0), Eigen::Vector4d(2.5, 1.0, 3.5, 2.0)};
+  check_inset({4.0, 3.0, 0.25, holes, 0.5});
+  const mesh::TriMesh sheet = grid_sheet(4.0, 3.0, 0.25, holes);
+  Polycube2D pc;
+  pc.domain.width = 4.0;
+  pc.domain.height = 3.0;
+  pc.domain.holes = holes;
+  pc.domain.hole_loop = {1, 2};
+  pc.uv = sheet.V.leftCols(2);
+  const InsetBase base = inset_base_surface(sheet, pc, 0.5);
+  ASSERT_EQ(base.domain.holes.size(), 2u);
+  EXPECT_EQ(base.domain.holes[0](1), base.domain.holes[1](1));
+  EXPECT_EQ(base.domain.holes[0](3), base.domain.holes[1](3));
+  const BaseLayout L = base_layout(base);
+  EXPECT_EQ(L.rectangles.size(), 13u);
+  EXPECT_EQ(L.crests.size(), 24u);
+  EXPECT_EQ(L.domain_edges.size(), 12u);
+}
+
+TEST(InsetBaseSurface, CurvedSheetStaysNearItsSurface) {
+  // A wavy sheet z = A sin(3x) over the same (u, v) = (x, y). Without
+  // smoothing, every vertex is a grid vertex (on the surface) or a cut
+  // vertex interpolated along an edge: within the chord error A 9 h^2 / 8.
+  // Taubin smoothing (20 rounds) then flattens the wave a little (it is
+  // meant to remove tet-scale waves): measured 0.0076 = 5 % of A here.
+  const double A = 0.15, h = 0.125, chord = A * 9.0 * h * h / 8.0;
+  mesh::TriMesh sheet = grid_sheet(2.0, 1.5, h);
+  for (Eigen::Index v = 0; v < sheet.V.rows(); ++v) sheet.V(v, 2) = A * std::sin(3.0 * sheet.V(v, 0));
+  Polycube2D pc;
+  pc.domain.width = 2.0;
+  pc.domain.height = 1.5;
+  pc.uv = sheet.V.leftCols(2);
+  for (int smoothing : {0, 20}) {
+    const InsetBase base = inset_base_surface(sheet, pc, 0.5, smoothing);
+    const RectilinearDomain& D = base.domain;
+    EXPECT_GT(min_uv_area(base.mesh, base.uv), 0.0);
+    EXPECT_NEAR(uv_area(base.mesh, base.uv), D.width * D.height, 1e-12);
+    double worst = 0.0;
+    int corners = 0;
+    for (Eigen::Index v = 0; v < base.mesh.V.rows(); ++v) {
+      const Eigen::RowVector3d x = base.mesh.V.row(v);
+      const double off = std::abs(x.z() - A * std::sin(3.0 * x.x()));
+      worst = std::max(worst, off);
+      if ((base.uv(v, 0) == 0.0 || base.uv(v, 0) == D.width) && (base.uv(v, 1) == 0.0 || base.uv(v, 1) == D.height)) {
+        ++corners;
+        EXPECT_LT(off, chord) << "corner vertex " << v << " (never smoothed)";
+      }
+    }
+    EXPECT_EQ(corners, 4);
+    EXPECT_LT(worst, smoothing == 0 ? chord : 0.1 * A) << "smoothing " << smoothing;
+    const SheetTopology topo = analyze_sheet(base.mesh.F, base.mesh.V.rows());
+    EXPECT_EQ(describe_sheet_problem(topo, 1, "inset wavy sheet"), "");
+  }
 }
 
 TEST(InsetBaseSurface, BadM0) {

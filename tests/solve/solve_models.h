@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "igaprep/spline/find_interfaces.h"
 #include "igaprep/spline/spline.h"
 
 namespace solve_test {
@@ -104,55 +105,8 @@ inline Patch reorient(const Patch& in, std::array<int, 3> perm, std::array<bool,
 }
 
 // Finds every pair of patch sides with coincident control points and records
-// it as an interface, with the dirmap/orient that spline::check_conformity accepts.
-inline void find_interfaces(MultiPatch& mp, double tol = 1e-9) {
-  using namespace igaprep::spline;
-  mp.interfaces.clear();
-  const int np = static_cast<int>(mp.patches.size());
-  for (int a = 0; a < np; ++a)
-    for (int b = a + 1; b < np; ++b)
-      for (int sa = 1; sa <= 6; ++sa)
-        for (int sb = 1; sb <= 6; ++sb) {
-          const auto ia = side_control_points(mp.patches[a], sa);
-          const auto ib = side_control_points(mp.patches[b], sb);
-          if (ia.size() != ib.size()) continue;
-          Eigen::Vector3d ca = Eigen::Vector3d::Zero(), cb = Eigen::Vector3d::Zero();
-          for (int i : ia) ca += mp.patches[a].control_points.row(i).transpose();
-          for (int i : ib) cb += mp.patches[b].control_points.row(i).transpose();
-          if ((ca - cb).norm() > tol * ia.size()) continue;
-          const int da = side_direction(sa), db = side_direction(sb);
-          const auto ta = side_tangent_directions(sa), tb = side_tangent_directions(sb);
-          bool found = false;
-          for (int swap = 0; swap < 2 && !found; ++swap)
-            for (int o = 0; o < 4 && !found; ++o) {
-              Interface itf;
-              itf.patch_a = a;
-              itf.side_a = sa;
-              itf.patch_b = b;
-              itf.side_b = sb;
-              itf.dirmap[da] = db;
-              itf.orient[da] = side_is_max(sa) != side_is_max(sb) ? 1 : 0;
-              itf.dirmap[ta[0]] = tb[swap];
-              itf.dirmap[ta[1]] = tb[1 - swap];
-              itf.orient[ta[0]] = o & 1;
-              itf.orient[ta[1]] = (o >> 1) & 1;
-              MultiPatch probe;
-              probe.patches = {mp.patches[a], mp.patches[b]};
-              itf.patch_a = 0;
-              itf.patch_b = 1;
-              probe.interfaces = {itf};
-              try {
-                if (!check_conformity(probe, tol).conforming) continue;
-              } catch (...) {
-                continue;
-              }
-              itf.patch_a = a;
-              itf.patch_b = b;
-              mp.interfaces.push_back(itf);
-              found = true;
-            }
-        }
-}
+// it as an interface (the library's geometric matching).
+inline void find_interfaces(MultiPatch& mp, double tol = 1e-9) { igaprep::spline::find_interfaces(mp, tol); }
 
 // Labels every side that is not on an interface by the name `classify`
 // returns for the physical point at the side's parameter centre.

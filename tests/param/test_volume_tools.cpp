@@ -668,6 +668,38 @@ TEST(TraceColumn, LinearFieldGivesAStraightColumn) {
   EXPECT_LT(kp, k);
 }
 
+TEST(TraceColumn, RadialFieldInASphericalShell) {
+  // u = |x| on the shell 1 < r < 2: -grad u points to the centre, so the
+  // column from a point runs (nearly: P1 vertex gradients) radially in to
+  // the inner sphere.
+  const param_test::Shell shell = param_test::spherical_shell(3, 4, 1.0, 2.0);
+  const mesh::TetMesh& m = shell.mesh;
+  const TetTopology topo = build_tet_topology(m.T, m.V.rows());
+  const Eigen::VectorXd u = m.V.rowwise().norm();
+  const Eigen::MatrixXd grad = vertex_gradients(m.V, m.T, u);
+  const FieldProbe probe(m.V, m.T, topo, u, grad);
+  for (const Eigen::Vector3d& start : {Eigen::Vector3d(1.8, 0.1, 0.2), Eigen::Vector3d(-0.5, 1.1, -1.0)}) {
+    const StreamlineColumn col = trace_column(probe, start, 0.01);
+    const Eigen::Index k = col.path.rows();
+    ASSERT_GT(k, 10);
+    const Eigen::Vector3d dir = start.normalized();
+    double off_axis = 0.0;
+    for (Eigen::Index j = 0; j < k; ++j) {
+      const Eigen::Vector3d p = col.path.row(j).transpose();
+      off_axis = std::max(off_axis, (p - p.dot(dir) * dir).norm());
+      if (j > 0) EXPECT_GT(col.arc(j), col.arc(j - 1));
+    }
+    EXPECT_LT(off_axis, 5e-3);  // measured 2.0e-3 and 1.4e-3
+    // It ends on the inner boundary (the polyhedral sphere: r within 1 and its inradius).
+    const double r_end = col.path.row(k - 1).norm();
+    EXPECT_LE(r_end, 1.0 + 1e-9);
+    EXPECT_GT(r_end, 0.98);
+    EXPECT_NEAR(col.arc(k - 1), start.norm() - r_end, 1e-4);  // measured 6e-6
+    EXPECT_NEAR(col.at_level(1.5).norm(), 1.5, 1e-2);  // P1 |x| is larger than |x|: 1.495
+    EXPECT_NEAR(probe.value(col.at_level(1.5)), 1.5, 1e-9);
+  }
+}
+
 TEST(TraceColumn, Failures) {
   const LinearField f;
   const FieldProbe probe(f.mesh.V, f.mesh.T, f.topo, f.u, f.grad);

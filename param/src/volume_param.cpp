@@ -79,6 +79,7 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
                                const std::vector<double>& params, const VolumeParamOptions& options) {
   const int n = H.num_surfaces;
   const int m = static_cast<int>(params.size());
+  if (n < 1) throw bad_input("volume parameterization: H has no surface");
   if (options.strategy != 1 && options.strategy != 2)
     throw bad_input("volume parameterization: strategy must be 1 or 2, got " + std::to_string(options.strategy));
   if (m < 3 || params.front() != 0.0 || params.back() != 1.0)

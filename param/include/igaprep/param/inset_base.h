@@ -18,8 +18,9 @@ namespace igaprep::param {
 struct InsetBase {
   mesh::TriMesh mesh;          // M: the part of M0trim inside the inset domain
   Eigen::MatrixXd uv;          // #M.V x 2, in the inset domain's coordinates
-  RectilinearDomain domain;    // [0, W - 2d] x [0, H - 2d] with the grown holes
-  double inset = 0.0;          // d, in (u, v) units (= 3D arc length along the domain's sides)
+  RectilinearDomain domain;    // about [0, W - 2d] x [0, H - 2d] with the grown holes: each cut line is
+                               // moved by up to 0.2 mean (u, v) edges, away from the sheet's vertices
+  double inset = 0.0;          // the nominal d, in (u, v) units (= 3D arc length along the domain's sides)
 };
 
 // Inputs: a sheet and its (u, v), a value c, the axis (0: u, 1: v). Splits

@@ -41,7 +41,7 @@ struct VolumeParamOptions {
   int smoothing = 5;   // rounds of Taubin smoothing of the inset base surface (more: TetGen saw M intersect itself on torus3)
   double theta = 0.78539816339744831;  // pi/4: angle of S+ and S- from M's plane at its boundary
   double w0 = -1.0;     // iso-value of T(n+1) in ((n - 1)/n, 1); < 0: midway, at least 0.75
-  double blend = 0.5;  // the rays lean out within this fraction of the narrowest band of M's domain from its boundary
+  double blend = 1.0;  // the rays lean out within this fraction of the narrowest band of M's domain from its boundary
   double crest_reach = 1.0;  // P2 at this fraction of the kite point (see build_volume_param)
   double ray_step = 2e-3;     // ray march step, fraction of H's bounding-box diagonal
   double stream_step = 1e-3;  // streamline step (Runge-Kutta 4), fraction of the diagonal

@@ -275,6 +275,8 @@ TEST(RunCli, BadCaseKeysAreRefusedByName) {
       {R"(, "load_case": {"fix": "outer", "pressure": {"label": "outer"}})", "missing key 'load_case.pressure.value'"},
       {R"(, "load_case": {"fix": {"label": "outer", "components": "xw"}})", "'load_case.fix.components'"},
       {R"(, "load_case": {"fix": [{"label": "outer", "box": [[1, 0, 0], [0, 1, 1]]}]})", "'load_case.fix[0].box'"},
+      {R"(, "load_case": {"fix": "outer", "traction": {"label": "top", "value": [0, 0, 1]}})",
+       "'load_case.traction[0].label': 'top' is not a surface label (labels: outer, inner)"},
   };
   for (const auto& c : cases) {
     const auto r = run_cli("run " + write_case(dir, c.extra) + " -o " + dir + "/out");

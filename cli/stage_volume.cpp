@@ -42,6 +42,7 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
     mesh::write_vtu((fs::path(dir) / "decomposition_w.vtu").string(), v);
   }
 
+  const double decompose_seconds = t_decomp.seconds();
   StageTimer t_param;
   const spline::BlockFitOptions fit_options = c.fit;
   const param::VolumeParam vp =
@@ -59,8 +60,11 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
                     vp.blocks[i].layer, vp.blocks[i].folded);
     std::printf("\n");
   }
+  const double param_seconds = t_param.seconds();
   StageTimer t_fit;
   VolumeStageResult out;
+  out.decompose_seconds = decompose_seconds;
+  out.param_seconds = param_seconds;
   spline::MultiPatch& mp = out.model;
   for (const auto& s : c.surfaces) mp.labels.push_back(s.label);
   for (const auto& m : c.materials) mp.materials.push_back({m.name, m.young_modulus, m.poisson_ratio});
@@ -111,6 +115,7 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
               t_fit.seconds(), mp.patches.size(), fit_options.degree, fit_options.elements, mp.interfaces.size(),
               out.stitched, out.max_stitch, mp.boundaries.size(), out.unmatched_sides, n);
   std::fflush(stdout);
+  out.fit_seconds = t_fit.seconds();
   return out;
 }
 

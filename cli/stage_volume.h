@@ -18,6 +18,7 @@ struct VolumeStageResult {
   int stitched = 0;          // side control points made identical by stitching
   double max_stitch = 0.0;   // the largest such move
   int unmatched_sides = 0;   // sides neither on an interface nor labelled (0 for a valid model)
+  double decompose_seconds = 0.0, param_seconds = 0.0, fit_seconds = 0.0;
 };
 
 // Inputs: the case, its surfaces, the midsurface stage's result, output

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "cli/cli_runner.h"
 
@@ -137,6 +139,30 @@ TEST(CaseCli, MidsurfaceSectionIsParsedAndItsUnknownKeysNamed) {
   const auto r = run_cli("midsurface " + path);
   EXPECT_EQ(r.exit_code, 1) << r.out;
   EXPECT_NE(r.out.find("colour"), std::string::npos) << r.out;
+}
+
+// The decomposition and fit sections: unknown keys and values out of range
+// are refused before any work, naming the key.
+TEST(CaseCli, DecompositionAndFitKeysAreChecked) {
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {R"("decomposition": {"colour": 1})", "decomposition.colour"},
+      {R"("decomposition": {"strategy": 3})", "decomposition.strategy"},
+      {R"("decomposition": {"strategy": 1.5})", "decomposition.strategy"},
+      {R"("decomposition": {"theta": 2.0})", "decomposition.theta"},
+      {R"("decomposition": {"inset": 1.0})", "decomposition.inset"},
+      {R"("decomposition": {"smoothing": -1})", "decomposition.smoothing"},
+      {R"("fit": {"elements": 0})", "fit.elements"},
+      {R"("fit": {"degree": 2.5})", "fit.degree"},
+      {R"("fit": {"knots": 3})", "fit.knots"},
+  };
+  for (const auto& [section, key] : bad) {
+    const auto dir = scratch_dir("volume_keys");
+    const auto path = write_case(dir, "{" + surfaces_key() + ", " + section + "}");
+    const auto r = run_cli("run " + path + " -o " + dir + "/out");
+    EXPECT_EQ(r.exit_code, 1) << section << "\n" << r.out;
+    EXPECT_NE(r.out.find(key), std::string::npos) << section << "\n" << r.out;
+    EXPECT_EQ(r.out.find("tetmesh "), std::string::npos) << "refused before any stage: " << r.out;
+  }
 }
 
 TEST(CaseCli, MidsurfaceOfRing2PrintsTwoLoopsAndWritesVtu) {

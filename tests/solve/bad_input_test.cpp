@@ -15,12 +15,15 @@
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/iga_check/elasticity_solve.h"
 #include "solve_models.h"
+#include "solve/expect_bad_input.h"
 
 using namespace igaprep;
 using namespace solve_test;
 namespace fs = std::filesystem;
 
 namespace {
+
+using solve_test::expect_bad_input;
 
 MultiPatch two_boxes() {
   MultiPatch mp;
@@ -43,17 +46,6 @@ iga_check::ElasticityProblem clamped_pulled() {
   return p;
 }
 
-// Runs f, expects a bad_input whose message contains every fragment.
-template <class F>
-void expect_bad_input(F f, const std::vector<std::string>& fragments) {
-  try {
-    f();
-    ADD_FAILURE() << "no error thrown";
-  } catch (const Error& e) {
-    EXPECT_EQ(e.kind(), ErrorKind::BadInput) << e.what();
-    for (const auto& s : fragments) EXPECT_NE(std::string(e.what()).find(s), std::string::npos) << e.what();
-  }
-}
 
 }  // namespace
 

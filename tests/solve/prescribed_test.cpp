@@ -14,11 +14,14 @@
 #include "igaprep/iga_check/elasticity_material.h"
 #include "igaprep/iga_check/elasticity_solve.h"
 #include "solve_models.h"
+#include "solve/expect_bad_input.h"
 
 using namespace igaprep;
 using namespace solve_test;
 
 namespace {
+
+using solve_test::expect_bad_input;
 
 const double kPi = 3.14159265358979323846;
 
@@ -65,16 +68,6 @@ double coefficient_error(const MultiPatch& solved, const std::function<Eigen::Ve
   return e;
 }
 
-template <class F>
-void expect_bad_input(F f, const std::vector<std::string>& fragments) {
-  try {
-    f();
-    ADD_FAILURE() << "no error thrown";
-  } catch (const Error& e) {
-    EXPECT_EQ(e.kind(), ErrorKind::BadInput) << e.what();
-    for (const auto& s : fragments) EXPECT_NE(std::string(e.what()).find(s), std::string::npos) << e.what();
-  }
-}
 
 }  // namespace
 

@@ -14,17 +14,12 @@
 #include "igaprep/core/error.h"
 #include "igaprep/mesh/check_surface.h"
 #include "igaprep/mesh/read_surface.h"
+#include "peak_memory.h"
 
 namespace {
 
-// Peak resident set size of this process so far, in MiB (/proc/self/status VmHWM).
-double peak_rss_mib() {
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line))
-    if (line.rfind("VmHWM:", 0) == 0) return std::atof(line.c_str() + 6) / 1024.0;
-  return -1;
-}
+// Peak resident set size of this process so far, in MiB.
+double peak_rss_mib() { return peak_memory_kib() / 1024.0; }
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -12,6 +12,7 @@
 
 #include "igaprep/iga_check/elasticity_solve.h"
 #include "igaprep/spline/knot_vector.h"
+#include "peak_memory.h"
 
 using namespace igaprep;
 
@@ -41,13 +42,6 @@ spline::MultiPatch box(int p, int n) {
   return mp;
 }
 
-long peak_memory_kib() {
-  std::ifstream f("/proc/self/status");
-  std::string line;
-  while (std::getline(f, line))
-    if (line.rfind("VmHWM:", 0) == 0) return std::atol(line.c_str() + 6);
-  return -1;
-}
 
 void run(int p, int n, iga_check::LinearSolver solver) {
   iga_check::ElasticityProblem problem;

@@ -12,6 +12,7 @@
 
 #include "../tests/solve/solve_models.h"
 #include "igaprep/iga_check/manufactured_study.h"
+#include "peak_memory.h"
 
 using namespace igaprep;
 
@@ -33,13 +34,6 @@ spline::MultiPatch ring() {
   return mp;
 }
 
-long peak_memory_kib() {
-  std::ifstream f("/proc/self/status");
-  std::string line;
-  while (std::getline(f, line))
-    if (line.rfind("VmHWM:", 0) == 0) return std::atol(line.c_str() + 6);
-  return -1;
-}
 
 }  // namespace
 

@@ -10,48 +10,13 @@
 
 namespace igaprep::param {
 
-bool FieldProbe::coordinates(int c, const Eigen::Vector3d& p, Eigen::Vector4d& b) const {
-  Eigen::Matrix3d E;
-  const Eigen::Vector3d o = V_.row(T_(c, 0)).transpose();
-  for (int k = 0; k < 3; ++k) E.col(k) = V_.row(T_(c, k + 1)).transpose() - o;
-  const Eigen::FullPivLU<Eigen::Matrix3d> lu(E);
-  if (!lu.isInvertible()) return false;
-  const Eigen::Vector3d x = lu.solve(p - o);
-  b << 1.0 - x.sum(), x;
-  return true;
-}
-
 int FieldProbe::locate(const Eigen::Vector3d& p, int* hint, Eigen::Vector4d* bary) const {
-  const int m = static_cast<int>(T_.rows());
-  const bool fresh = !(hint && *hint >= 0 && *hint < m);
-  int c = fresh ? 0 : *hint;
-  Eigen::Vector4d b;
-  for (int it = 0; it < 10000; ++it) {
-    if (!coordinates(c, p, b)) break;
-    int k;
-    if (b.minCoeff(&k) >= -1e-12) {
-      if (hint) *hint = c;
-      if (bary) *bary = b.cwiseMax(0.0) / b.cwiseMax(0.0).sum();
-      return c;
-    }
-    const int next = topo_.neighbor(c, k);
-    if (next < 0) {
-      if (!fresh) return -1;  // a short step from a known tet: p lies beyond this boundary facet
-      break;                  // a walk from far away can leave a non-convex mesh: scan
-    }
-    c = next;
-  }
-  // The walk cycled (a flat tet or a non-Delaunay mesh) or left the mesh: scan.
-  int best = -1;
-  double best_min = -1e-9;
-  for (int x = 0; x < m; ++x)
-    if (coordinates(x, p, b) && b.minCoeff() > best_min) best_min = b.minCoeff(), best = x;
-  if (best >= 0) {
-    coordinates(best, p, b);
-    if (hint) *hint = best;
-    if (bary) *bary = b.cwiseMax(0.0) / b.cwiseMax(0.0).sum();
-  }
-  return best;
+  // A hinted query is a short step from a known tet: a walk that leaves the
+  // mesh means p is outside. A fresh one may leave a non-convex mesh: scan.
+  const bool fresh = !(hint && *hint >= 0 && *hint < T_.rows());
+  const int c = locate_in_tets(V_, T_, topo_, p, fresh ? -1 : *hint, bary, fresh);
+  if (c >= 0 && hint) *hint = c;
+  return c;
 }
 
 double FieldProbe::value(const Eigen::Vector3d& p, int* hint) const {

@@ -353,47 +353,7 @@ TraceResult GradientTracer::trace(const Eigen::Vector3d& start, const TraceTarge
 
 int GradientTracer::locate(const Eigen::Vector3d& p, int hint, Eigen::Vector4d* bary) const {
   if (C_.cols() != 4) throw bad_input("locate: only for tet meshes");
-  const int m = static_cast<int>(C_.rows());
-  if (m == 0) return -1;
-  auto coords = [&](int c, Eigen::Vector4d& b) {
-    GradPhi<4> gp;
-    if (detail::cell_grad_phi(V_, C_, c, gp) == 0.0) return false;
-    const Eigen::Vector3d r = p - detail::vrow(V_, C_(c, 0));
-    for (int k = 1; k < 4; ++k) b(k) = gp.row(k).dot(r);
-    b(0) = 1.0 - b(1) - b(2) - b(3);
-    return true;
-  };
-  Eigen::Vector4d b;
-  // Visibility walk towards the point; non-Delaunay meshes can make it cycle
-  // and non-convex domains can make it leave, so it is bounded and backed by a scan.
-  int c = (hint >= 0 && hint < m) ? hint : 0;
-  for (int it = 0; it < 20000 && c >= 0; ++it) {
-    if (!coords(c, b)) break;
-    int k;
-    if (b.minCoeff(&k) >= -1e-12) {
-      if (bary) *bary = b.cwiseMax(0.0) / b.cwiseMax(0.0).sum();
-      return c;
-    }
-    c = topo_.neighbor(c, k);
-  }
-  int best = -1;
-  double best_min = -1e-9;
-  for (int x = 0; x < m; ++x) {
-    // Cheap bounding-box rejection first.
-    bool outside = false;
-    for (int a = 0; a < 3 && !outside; ++a) {
-      double lo = V_(C_(x, 0), a), hi = lo;
-      for (int k = 1; k < 4; ++k) lo = std::min(lo, V_(C_(x, k), a)), hi = std::max(hi, V_(C_(x, k), a));
-      outside = p(a) < lo - 1e-9 * (hi - lo) || p(a) > hi + 1e-9 * (hi - lo);
-    }
-    if (outside || !coords(x, b)) continue;
-    if (b.minCoeff() > best_min) best_min = b.minCoeff(), best = x;
-  }
-  if (best >= 0 && bary) {
-    coords(best, b);
-    *bary = b.cwiseMax(0.0) / b.cwiseMax(0.0).sum();
-  }
-  return best;
+  return locate_in_tets(V_, C_, topo_, p, hint, bary);
 }
 
 }  // namespace igaprep::param

@@ -20,8 +20,8 @@ class FieldProbe {
              const Eigen::VectorXd& u, const Eigen::MatrixXd& vertex_gradient)
       : V_(V), T_(T), topo_(topology), u_(u), grad_(vertex_gradient) {}
 
-  // The tet holding p by a visibility walk from *hint (then a scan when the
-  // walk cycles, or when it leaves the mesh and no hint was given); -1 when a
+  // The tet holding p (locate_in_tets): a walk from *hint, with a scan when
+  // it cycles, or when it leaves the mesh and no hint was given; -1 when a
   // walk from a hint leaves the mesh through its boundary (the steps of rays
   // and streamlines are short) or no tet holds p. *hint receives the tet found; *bary its barycentric coordinates.
   int locate(const Eigen::Vector3d& p, int* hint, Eigen::Vector4d* bary) const;
@@ -57,7 +57,6 @@ class FieldProbe {
                                double step, double max_length, int* hint = nullptr) const;
 
  private:
-  bool coordinates(int c, const Eigen::Vector3d& p, Eigen::Vector4d& b) const;
   const Eigen::MatrixXd& V_;
   const Eigen::MatrixXi& T_;
   const TetTopology& topo_;

@@ -29,4 +29,14 @@ TetTopology build_tet_topology(const Eigen::MatrixXi& cells, Eigen::Index num_ve
 // facet that is no facet of any cell.
 std::vector<int> mark_facets(const Eigen::MatrixXi& cells, const TetTopology& topology, const Eigen::MatrixXi& facets);
 
+// The tet holding point p: a visibility walk from `hint` (tet 0 when hint is
+// -1) through the neighbours, then a scan of all tets (bounding boxes first)
+// when the walk cycles (flat tets, non-Delaunay meshes) or, with
+// scan_when_walk_leaves, when it leaves the mesh (a walk from far away can
+// leave a non-convex mesh). Returns -1 when no tet holds p (or the walk left
+// the mesh and the scan was not asked for); *bary receives p's barycentric
+// coordinates (clamped to >= 0, normalized).
+int locate_in_tets(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, const TetTopology& topology,
+                   const Eigen::Vector3d& p, int hint, Eigen::Vector4d* bary, bool scan_when_walk_leaves = true);
+
 }  // namespace igaprep::param

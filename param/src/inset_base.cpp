@@ -1,6 +1,7 @@
 #include "igaprep/param/inset_base.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -119,7 +120,6 @@ void smooth_sheet(mesh::TriMesh& sheet, const std::vector<char>& fixed, int roun
 
 int collapse_short_edges(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, const std::vector<char>& pinned, double min_length) {
   int collapsed = 0;
-  std::vector<char> gone(static_cast<std::size_t>(sheet.V.rows()), 0);
   std::vector<char> dead(static_cast<std::size_t>(sheet.F.rows()), 0);
   std::vector<std::vector<int>> faces_of(static_cast<std::size_t>(sheet.V.rows()));
   for (Eigen::Index f = 0; f < sheet.F.rows(); ++f)
@@ -160,7 +160,6 @@ int collapse_short_edges(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, const std::v
           if (sheet.F(g, j) == drop) sheet.F(g, j) = keep;
         faces_of[keep].push_back(g);
       }
-      gone[drop] = 1;
       ++collapsed;
     }
   }
@@ -171,6 +170,23 @@ int collapse_short_edges(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, const std::v
   sheet.F = F.topRows(n);
   return collapsed;
 }
+
+namespace {
+
+bool same_line(double x, double c) { return std::abs(x - c) <= 1e-12 * (1.0 + std::abs(c)); }
+
+// Per axis: whether p lies on one of the domain's lines in that axis (the
+// outer sides and the holes' sides).
+std::array<bool, 2> on_domain_lines(const RectilinearDomain& D, const Eigen::Vector2d& p) {
+  std::vector<double> us{0.0, D.width}, vs{0.0, D.height};
+  for (const auto& h : D.holes) us.push_back(h(0)), us.push_back(h(2)), vs.push_back(h(1)), vs.push_back(h(3));
+  std::array<bool, 2> on{{false, false}};
+  for (double c : us) on[0] = on[0] || same_line(p.x(), c);
+  for (double c : vs) on[1] = on[1] || same_line(p.y(), c);
+  return on;
+}
+
+}  // namespace
 
 InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double m0, int smoothing) {
   if (!(m0 > 0.0 && m0 < 1.0)) throw bad_input("inset base surface: m0 = " + std::to_string(m0) + " is outside (0, 1)");
@@ -195,7 +211,7 @@ InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polyc
   std::map<std::pair<int, double>, double> placed;  // lines with one value are placed once (aligned hole sides stay aligned)
   auto place = [&](int axis, double c) {
     for (const auto& [key, value] : placed)
-      if (key.first == axis && std::abs(key.second - c) <= 1e-12 * (1.0 + std::abs(c))) return value;
+      if (key.first == axis && same_line(key.second, c)) return value;
     double best = c, best_gap = -1.0;
     for (int k = -8; k <= 8; ++k) {
       const double trial = c + 0.025 * k * mean_edge;
@@ -222,12 +238,10 @@ InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polyc
   // close to a vertex: collapsed (vertices on the cut lines stay put).
   {
     std::vector<char> pinned(static_cast<std::size_t>(out.uv.rows()), 0);
-    std::vector<double> us{0.0, out.domain.width}, vs{0.0, out.domain.height};
-    for (const auto& h : out.domain.holes) us.push_back(h(0)), us.push_back(h(2)), vs.push_back(h(1)), vs.push_back(h(3));
-    for (Eigen::Index v = 0; v < out.uv.rows(); ++v)
-      for (int axis = 0; axis < 2; ++axis)
-        for (double c : axis == 0 ? us : vs)
-          if (std::abs(out.uv(v, axis) - c) <= 1e-12 * (1.0 + std::abs(c))) pinned[v] = 1;
+    for (Eigen::Index v = 0; v < out.uv.rows(); ++v) {
+      const auto on = on_domain_lines(out.domain, out.uv.row(v).transpose());
+      pinned[static_cast<std::size_t>(v)] = on[0] || on[1];
+    }
     double mean3 = 0.0;
     for (Eigen::Index f = 0; f < out.mesh.F.rows(); ++f) mean3 += (out.mesh.V.row(out.mesh.F(f, 0)) - out.mesh.V.row(out.mesh.F(f, 1))).norm();
     mean3 /= std::max<Eigen::Index>(1, out.mesh.F.rows());
@@ -257,14 +271,10 @@ InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polyc
   // the zero set of a P1 field: wavy at the scale of the tets, and the thin
   // crest volumes along M's boundary would inherit the waves).
   std::vector<char> corner(static_cast<std::size_t>(count), 0);
-  auto on_side = [](double x, const std::vector<double>& values) {
-    for (double c : values)
-      if (std::abs(x - c) <= 1e-12 * (1.0 + std::abs(c))) return true;
-    return false;
-  };
-  std::vector<double> us{0.0, out.domain.width}, vs{0.0, out.domain.height};
-  for (const auto& h : out.domain.holes) us.push_back(h(0)), us.push_back(h(2)), vs.push_back(h(1)), vs.push_back(h(3));
-  for (int v = 0; v < count; ++v) corner[static_cast<std::size_t>(v)] = on_side(uv(v, 0), us) && on_side(uv(v, 1), vs);
+  for (int v = 0; v < count; ++v) {
+    const auto on = on_domain_lines(out.domain, uv.row(v).transpose());
+    corner[static_cast<std::size_t>(v)] = on[0] && on[1];
+  }
   out.mesh = {V, F};
   smooth_sheet(out.mesh, corner, smoothing);
   const SheetTopology topo = analyze_sheet(F, V.rows());

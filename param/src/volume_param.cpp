@@ -149,7 +149,7 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
   // Per rectangle: M, the top and the bottom of the core on an m x m grid.
   struct RectGrid {
     Grid2 base, top, bottom;    // top, bottom: the lids (strategy 2) or the streamline starts (strategy 1)
-    std::vector<Eigen::Vector2d> uv;
+    Grid2 lean;                 // the frame's lean at each sample (the crest's binormal on M's boundary)
   };
   const bool strategy1 = options.strategy == 1;
   // Strategy 1 starts its streamlines this far from M along D+ and D-
@@ -166,7 +166,7 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
       for (int i = 0; i < m; ++i) {
         const Eigen::Vector2d uv((1.0 - params[i]) * R(0) + params[i] * R(2), (1.0 - params[j]) * R(1) + params[j] * R(3));
         const Frame f = frame(uv);
-        g.uv.push_back(uv);
+        g.lean.push_back(f.lean);
         g.base.push_back(f.position);
         g.top.push_back(strategy1 ? start_point(f, 1.0) : ray(f, 1.0));
         g.bottom.push_back(strategy1 ? start_point(f, -1.0) : ray(f, -1.0));
@@ -241,16 +241,15 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
       P0[k] = g.base[q];
       P3[k] = g.top[q];
       P1[k] = g.bottom[q];
-      const Frame f = frame(g.uv[q]);
-      if (f.lean.norm() == 0.0) throw internal_error("volume parameterization: no binormal on M's boundary");
+      if (g.lean[q].norm() == 0.0) throw internal_error("volume parameterization: no binormal on M's boundary");
       // P2 out along the binormal, so that the crest's cross-section is
       // close to a kite with right angles at P3 and P1 (crest_reach = 1),
       // but no farther than the level halfway between Tn and T(n+1).
-      const Eigen::Vector3d b = f.lean.normalized();
+      const Eigen::Vector3d b = g.lean[q].normalized();
       const double r3 = 0.5 * ((P3[k] - P0[k]).norm() + (P1[k] - P0[k]).norm());
       const double kite = options.crest_reach * r3 / std::cos(options.theta);
-      const Eigen::Vector3d limit = probe.ray_to_level(f.position, b, 0.5 * (inner + out.w0), step, 0.5 * diag, &hint);
-      P2[k] = f.position + std::min(kite, (limit - f.position).norm()) * b;
+      const Eigen::Vector3d limit = probe.ray_to_level(P0[k], b, 0.5 * (inner + out.w0), step, 0.5 * diag, &hint);
+      P2[k] = P0[k] + std::min(kite, (limit - P0[k]).norm()) * b;
     }
     Eigen::MatrixXd s(m * m * m, 3);
     Grid2 upper(m * m), lower(m * m);

@@ -7,13 +7,11 @@
 
 using namespace igaprep::param;
 using midsurface_test::cached;
+using midsurface_test::kVariants;
+using midsurface_test::Variant;
+using midsurface_test::variant_name;
 
 namespace {
-struct Variant {
-  std::string model, variant;
-  int genus;
-};
-void PrintTo(const Variant& v, std::ostream* os) { *os << v.model << "/" << v.variant; }
 class Base : public ::testing::TestWithParam<Variant> {};
 
 double area(const igaprep::mesh::TriMesh& m) {
@@ -78,10 +76,7 @@ TEST_P(Base, LargerM0GivesSmallerM) {
 
 // Automatic cuts on every genus, and sphere2 cut by a plane and by explicit loops.
 INSTANTIATE_TEST_SUITE_P(Models, Base,
-                         ::testing::Values(Variant{"sphere2", "auto", 0}, Variant{"ring2", "auto", 1},
-                                           Variant{"torus3", "auto", 3}, Variant{"sphere2", "plane", 0},
-                                           Variant{"sphere2", "loops", 0}),
-                         [](const auto& info) { return info.param.model + "_" + info.param.variant; });
+                         ::testing::ValuesIn(kVariants), variant_name);
 
 TEST(BaseSurfaceRefusal, M0OutsideTheOpenInterval) {
   const auto& r = cached("sphere2").result;

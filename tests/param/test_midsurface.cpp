@@ -10,17 +10,13 @@
 using namespace igaprep;
 using namespace igaprep::param;
 using midsurface_test::cached;
+using midsurface_test::kVariants;
+using midsurface_test::Variant;
+using midsurface_test::variant_name;
 
 namespace {
 
-struct Variant {
-  std::string model, variant;
-  int genus;
-};
-const std::vector<Variant> kVariants = {
-    {"sphere2", "auto", 0}, {"ring2", "auto", 1}, {"torus3", "auto", 3}, {"sphere2", "plane", 0}, {"sphere2", "loops", 0}};
 
-void PrintTo(const Variant& v, std::ostream* os) { *os << v.model << "/" << v.variant; }
 
 class MidsurfaceModels : public ::testing::TestWithParam<Variant> {};
 
@@ -93,8 +89,7 @@ TEST_P(MidsurfaceModels, PathLengthVarianceIsReported) {
   EXPECT_LE(r.paths.variance, (r.paths.max - r.paths.min) * (r.paths.max - r.paths.min));
 }
 
-INSTANTIATE_TEST_SUITE_P(Models, MidsurfaceModels, ::testing::ValuesIn(kVariants),
-                         [](const auto& info) { return info.param.model + "_" + info.param.variant; });
+INSTANTIATE_TEST_SUITE_P(Models, MidsurfaceModels, ::testing::ValuesIn(kVariants), variant_name);
 
 TEST(MidsurfaceRefusal, PlaneAcrossTheTubeGivesTwoSheets) {
   // Plane x = 0 through ring2: two loops (right count), two connected regions,

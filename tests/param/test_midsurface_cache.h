@@ -5,9 +5,12 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <ostream>
 #include <string>
+#include <vector>
 
 #include <Eigen/Geometry>
+#include <gtest/gtest.h>
 
 #include "igaprep/models/builtin_models.h"
 #include "igaprep/param/midsurface_pipeline.h"
@@ -88,6 +91,19 @@ inline double winding_number(const Eigen::Vector3d& p, const igaprep::mesh::TriM
     w += 2.0 * std::atan2(num, den);
   }
   return w / (4.0 * M_PI);
+}
+
+// The cut variants the midsurface-stage tests run on: every model with its
+// automatic cut, and sphere2 with a plane and with explicit loops.
+struct Variant {
+  std::string model, variant;
+  int genus;
+};
+inline void PrintTo(const Variant& v, std::ostream* os) { *os << v.model << "/" << v.variant; }
+inline const std::vector<Variant> kVariants = {
+    {"sphere2", "auto", 0}, {"ring2", "auto", 1}, {"torus3", "auto", 3}, {"sphere2", "plane", 0}, {"sphere2", "loops", 0}};
+inline std::string variant_name(const ::testing::TestParamInfo<Variant>& info) {
+  return info.param.model + "_" + info.param.variant;
 }
 
 }  // namespace midsurface_test

@@ -10,13 +10,11 @@
 
 using namespace igaprep::param;
 using midsurface_test::cached;
+using midsurface_test::kVariants;
+using midsurface_test::Variant;
+using midsurface_test::variant_name;
 
 namespace {
-struct Variant {
-  std::string model, variant;
-  int genus;
-};
-void PrintTo(const Variant& v, std::ostream* os) { *os << v.model << "/" << v.variant; }
 class Polycube : public ::testing::TestWithParam<Variant> {};
 }  // namespace
 
@@ -92,10 +90,7 @@ TEST_P(Polycube, BijectiveIsoParametricAndTiled) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, Polycube,
-                         ::testing::Values(Variant{"sphere2", "auto", 0}, Variant{"ring2", "auto", 1},
-                                           Variant{"torus3", "auto", 3}, Variant{"sphere2", "plane", 0},
-                                           Variant{"sphere2", "loops", 0}),
-                         [](const auto& info) { return info.param.model + "_" + info.param.variant; });
+                         ::testing::ValuesIn(kVariants), variant_name);
 
 TEST(PolycubeCorners, UserPointsSnapToTheNearestBoundaryVertex) {
   const auto& r = cached("sphere2").result;

@@ -6,7 +6,7 @@ namespace igaprep::cli {
 
 param::VolumeParamOptions parse_decomposition_options(const nlohmann::json& s, const std::string& file) {
   if (!s.is_object()) case_fail(file, "'decomposition' must be an object");
-  refuse_unknown_keys(s, {"blend", "crest_reach", "inset", "smoothing", "strategy", "theta", "w0"}, "decomposition", file);
+  refuse_unknown_keys(s, {"blend", "crest_reach", "inset", "sliding_uv", "smoothing", "strategy", "surface_degree", "theta", "w0"}, "decomposition", file);
   param::VolumeParamOptions o;
   o.strategy = static_cast<int>(case_number(s, "strategy", o.strategy, 1, 2, "decomposition", file));
   if (s.contains("strategy") && !s["strategy"].is_number_integer())
@@ -19,6 +19,13 @@ param::VolumeParamOptions parse_decomposition_options(const nlohmann::json& s, c
   o.inset = case_number(s, "inset", o.inset, 0.05, 0.95, "decomposition", file);
   o.crest_reach = case_number(s, "crest_reach", o.crest_reach, 0.1, 2.0, "decomposition", file);
   o.blend = case_number(s, "blend", o.blend, 0.01, 4.0, "decomposition", file);
+  if (s.contains("surface_degree") && !s["surface_degree"].is_number_integer())
+    case_fail(file, "'decomposition.surface_degree' must be an integer");
+  o.surface_degree = static_cast<int>(case_number(s, "surface_degree", o.surface_degree, 0, 12, "decomposition", file));
+  if (s.contains("sliding_uv")) {
+    if (!s["sliding_uv"].is_boolean()) case_fail(file, "'decomposition.sliding_uv' must be true or false");
+    o.sliding_uv = s["sliding_uv"].get<bool>();
+  }
   return o;
 }
 

@@ -7,6 +7,7 @@
 #include "igaprep/param/base_layout.h"
 #include "igaprep/param/decomposition_mesh.h"
 #include "igaprep/param/inset_base.h"
+#include "igaprep/param/sliding_uv.h"
 #include "igaprep/param/w_field.h"
 #include "igaprep/spline/find_interfaces.h"
 #include "stage_timer.h"
@@ -19,7 +20,14 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
   const int n = static_cast<int>(surfaces.meshes.size());
 
   StageTimer t_decomp;
-  const param::InsetBase base = param::inset_base_surface(mid.m0trim.mesh, mid.polycube, c.volume.inset, c.volume.smoothing);
+  // M is cut along iso-lines of a (u, v) whose sides slide (sliding_uv.h):
+  // its corners are then right angles in 3D; the fixed-boundary (u, v) of the
+  // midsurface stays when the sliding one folds.
+  param::Polycube2D pc = mid.polycube;
+  param::SlidingUv sliding;
+  if (c.volume.sliding_uv) sliding = param::sliding_uv(mid.m0trim.mesh, pc);
+  if (sliding.valid) pc.uv = sliding.uv;
+  const param::InsetBase base = param::inset_base_surface(mid.m0trim.mesh, pc, c.volume.inset, c.volume.smoothing);
   if (keep_intermediate) {
     fs::create_directories(dir);
     mesh::VtuMesh v = mesh::vtu_triangles(base.mesh);
@@ -30,9 +38,17 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
   const param::DecompositionMesh H = param::decomposition_mesh(surfaces.meshes, base.mesh, c.tetmesh);
   const param::WField w = param::w_field(H);
   const param::BaseLayout layout = param::base_layout(base);
-  std::printf("decompose  %7.2f s  H: %lld vertices, %lld tets; w: %zu interior extrema; M: %zu rectangles, %zu "
-              "boundary segments\n",
-              t_decomp.seconds(), static_cast<long long>(H.tets.V.rows()), static_cast<long long>(H.tets.T.rows()),
+  char uv_note[160];
+  if (!c.volume.sliding_uv)
+    std::snprintf(uv_note, sizeof uv_note, "midsurface's (u, v)");
+  else if (sliding.valid)
+    std::snprintf(uv_note, sizeof uv_note, "sliding (u, v) (share of the sliding side positions >= %.2f)",
+                  sliding.min_sliding_share);
+  else
+    std::snprintf(uv_note, sizeof uv_note, "midsurface's (u, v) (the sliding one: %s)", sliding.reason.c_str());
+  std::printf("decompose  %7.2f s  M cut along the %s; H: %lld vertices, %lld tets; w: %zu interior extrema; "
+              "M: %zu rectangles, %zu boundary segments\n",
+              t_decomp.seconds(), uv_note, static_cast<long long>(H.tets.V.rows()), static_cast<long long>(H.tets.T.rows()),
               w.extrema.size(), layout.rectangles.size(), layout.crests.size());
   std::fflush(stdout);
   if (keep_intermediate) {

@@ -11,9 +11,11 @@
 #include "igaprep/core/progress.h"
 #include "igaprep/param/field_probe.h"
 #include "igaprep/param/gradient.h"
+#include "igaprep/param/grid_smoothing.h"
 #include "igaprep/param/inset_base.h"
 #include "igaprep/param/sheet_sampler.h"
 #include "igaprep/param/streamline_column.h"
+#include "igaprep/param/surface_projector.h"
 #include "igaprep/param/tet_topology.h"
 
 namespace igaprep::param {
@@ -171,6 +173,11 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
         g.top.push_back(strategy1 ? start_point(f, 1.0) : ray(f, 1.0));
         g.bottom.push_back(strategy1 ? start_point(f, -1.0) : ray(f, -1.0));
       }
+    // The sampled M and lids are piecewise linear with bumps a few samples
+    // wide, which the shell's streamlines carry out to T1 and the fit cannot
+    // follow. T(n+1) need not be exactly w = w0: only between Tn and M.
+    if (!strategy1 && options.surface_degree > 0)
+      for (Grid2* s : {&g.base, &g.top, &g.bottom}) *s = smooth_grid(*s, params, options.surface_degree);
   }
   // Grid index of position k along side s of a rectangle (box_sides order).
   auto side_index = [m](int s, int k) {
@@ -188,6 +195,14 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
   struct ShellBase {
     Grid2 face, start;
     bool collapsed = false;  // the face is a curve (strategy 1 crest)
+    // Strategy 2 crest faces: the shell is ruled across the face's second
+    // direction (j), between the exact streamline surfaces from its two long
+    // edges (S+ or S-, and the one from P2), its rows on T1 and the Ti put
+    // back onto them. The face is thin, and its own streamlines near P2 run
+    // along the ridge of w in M's plane, where the discrete gradient barely
+    // pulls them apart: they bunch up (a sample spacing drops to a tenth of
+    // its neighbours') and the fit folds.
+    bool ruled = false;
   };
   std::vector<ShellBase> core_faces;
   auto add_block = [&](BlockKind kind, int source, int layer, int material, Eigen::MatrixXd samples, int t1_side) {
@@ -251,6 +266,9 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
       const Eigen::Vector3d limit = probe.ray_to_level(P0[k], b, 0.5 * (inner + out.w0), step, 0.5 * diag, &hint);
       P2[k] = P0[k] + std::min(kite, (limit - P0[k]).norm()) * b;
     }
+    // The lids' edges P3 and P1 are smooth; P2 follows the ray limits, which
+    // are not (the crest is thin: a bump folds it).
+    if (options.surface_degree > 0) P2 = smooth_polyline(P2, params, options.surface_degree);
     Eigen::MatrixXd s(m * m * m, 3);
     Grid2 upper(m * m), lower(m * m);
     for (int b = 0; b < m; ++b)
@@ -264,20 +282,27 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
         lower[k + m * j] = lerp(P1[k], P2[k], params[j]);  // the b = 1 face, (tau, a)
       }
     add_block(BlockKind::Crest, static_cast<int>(c), 0, core_material, std::move(s), -1);
-    core_faces.push_back({upper, upper});
-    core_faces.push_back({lower, lower});
+    core_faces.push_back({upper, upper, false, true});  // ruled
+    core_faces.push_back({lower, lower, false, true});
   }
   out.rectangles = static_cast<int>(layout.rectangles.size());
   out.crests = static_cast<int>(layout.crests.size());
   out.core_faces = static_cast<int>(core_faces.size());
 
   // Shell: streamlines from every sample of every outer core face, cut at the layers' w-levels.
+  std::vector<SurfaceProjector> surface;  // T1..Tn
+  for (int k = 0; k < n; ++k) {
+    const std::vector<int>& rows = H.surface_faces[static_cast<std::size_t>(k)];
+    Eigen::MatrixXi F(static_cast<Eigen::Index>(rows.size()), 3);
+    for (std::size_t r = 0; r < rows.size(); ++r) F.row(static_cast<Eigen::Index>(r)) = H.tets.F.row(rows[r]);
+    surface.emplace_back(V, F);
+  }
   Progress progress("streamlines", core_faces.size());
   for (std::size_t f = 0; f < core_faces.size(); ++f) {
+    const ShellBase& face = core_faces[f];
     std::vector<StreamlineColumn> cols;
     cols.reserve(static_cast<std::size_t>(m * m));
-    for (const Eigen::Vector3d& y : core_faces[f].start)
-      cols.push_back(trace_column(probe, y, options.stream_step * diag, &hint));
+    for (const Eigen::Vector3d& y : face.start) cols.push_back(trace_column(probe, y, options.stream_step * diag, &hint));
     out.streamlines += m * m;
     for (int layer = 1; layer <= n; ++layer) {
       const double lo = static_cast<double>(layer - 1) / n;
@@ -291,13 +316,35 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
         for (int k = 0; k < m; ++k) {
           Eigen::Vector3d x;
           if (k == 0) x = col.at_arc(s_lo);
-          else if (k == m - 1) x = layer == n ? core_faces[f].face[q] : col.at_arc(s_hi);
+          else if (k == m - 1) x = layer == n ? face.face[static_cast<std::size_t>(q)] : col.at_arc(s_hi);
           else x = col.at_arc(s_lo + params[k] * (s_hi - s_lo));
           s.row(q + m * m * k) = x.transpose();
         }
       }
+      if (face.ruled) {
+        for (int k = 0; k < m; ++k)
+          for (int j = 1; j + 1 < m; ++j)
+            for (int i = 0; i < m; ++i)
+              s.row(i + m * j + m * m * k) = lerp(s.row(i + m * m * k).transpose(),
+                                                  s.row(i + m * (m - 1) + m * m * k).transpose(), params[j]).transpose();
+        // The layer's outer row goes back onto T(layer), its inner one onto
+        // T(layer + 1) (the innermost layer's is the core face), and the rows
+        // between move by the blend of those two corrections (the layers can
+        // be thinner near the crest than the corrections).
+        for (int j = 1; j + 1 < m; ++j)
+          for (int i = 0; i < m; ++i) {
+            const Eigen::Index outer = i + m * j, inner = outer + m * m * (m - 1);
+            const Eigen::RowVector3d d_outer =
+                surface[static_cast<std::size_t>(layer - 1)].closest(s.row(outer).transpose()).transpose() - s.row(outer);
+            const Eigen::RowVector3d d_inner =
+                layer < n ? Eigen::RowVector3d(surface[static_cast<std::size_t>(layer)].closest(s.row(inner).transpose()).transpose() -
+                                               s.row(inner))
+                          : Eigen::RowVector3d::Zero();
+            for (int k = 0; k < m; ++k) s.row(outer + m * m * k) += (1.0 - params[k]) * d_outer + params[k] * d_inner;
+          }
+      }
       add_block(BlockKind::Shell, static_cast<int>(f), layer, layer - 1, std::move(s), layer == 1 ? 4 : -1);
-      if (layer == n && core_faces[f].collapsed) out.blocks.back().collapsed[5] = true;
+      if (layer == n && face.collapsed) out.blocks.back().collapsed[5] = true;
     }
     progress.update(f + 1);
   }

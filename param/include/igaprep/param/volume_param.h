@@ -38,11 +38,17 @@ namespace igaprep::param {
 struct VolumeParamOptions {
   int strategy = 2;  // section 6: 2 (default) or 1
   double inset = 0.3;  // base surface: M0trim inset by this fraction of half its narrowest band (inset_base.h)
+  bool sliding_uv = true;  // base surface: cut along the iso-lines of sliding_uv.h (else the midsurface's (u, v))
   int smoothing = 5;   // rounds of Taubin smoothing of the inset base surface (more: TetGen saw M intersect itself on torus3)
-  double theta = 0.78539816339744831;  // pi/4: angle of S+ and S- from M's plane at its boundary
+  // Angle of S+ and S- from M's plane at its boundary: 1.1 rad (63 degrees); pi/4 left the crests'
+  // shells so thin near T1 that they folded on ring2 and torus3 (docs/decomposition.md).
+  double theta = 1.1;
   double w0 = -1.0;     // iso-value of T(n+1) in ((n - 1)/n, 1); < 0: midway, at least 0.75
   double blend = 1.0;  // the rays lean out within this fraction of the narrowest band of M's domain from its boundary
   double crest_reach = 1.0;  // P2 at this fraction of the kite point (see build_volume_param)
+  // Strategy 2: M and the lids, per rectangle, smoothed onto polynomials of
+  // this degree per direction (grid_smoothing.h); 0 = as sampled.
+  int surface_degree = 6;
   double ray_step = 2e-3;     // ray march step, fraction of H's bounding-box diagonal
   double stream_step = 1e-3;  // streamline step (Runge-Kutta 4), fraction of the diagonal
 };
@@ -60,8 +66,8 @@ struct SampledBlock {
   // on when it is a boundary of the model (0 = T1), else -1 (an interface).
   std::array<int, 6> side_label{{-1, -1, -1, -1, -1, -1}};
   std::array<bool, 6> collapsed{};  // sides that are a curve (strategy 1: the crest fans at M's boundary)
-  bool mirrored = false;
-  int folded = 0;  // sample-grid cells with a non-positive corner volume  // the first direction was reversed for a positive orientation
+  bool mirrored = false;  // the first direction was reversed for a positive orientation
+  int folded = 0;         // sample-grid cells with a non-positive corner volume
 };
 
 struct VolumeParam {

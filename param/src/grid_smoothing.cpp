@@ -1,0 +1,111 @@
+#include "igaprep/param/grid_smoothing.h"
+
+#include <string>
+
+#include <Eigen/Dense>
+
+#include "igaprep/core/error.h"
+
+namespace igaprep::param {
+
+namespace {
+
+// t (1 - t) P_a(2t - 1), a = 0..count-1 (Legendre polynomials: a well
+// conditioned basis of the bubbles that vanish at both ends).
+Eigen::VectorXd bubbles(double t, int count) {
+  Eigen::VectorXd b(count);
+  const double x = 2.0 * t - 1.0, w = t * (1.0 - t);
+  double prev = 1.0, cur = x;
+  for (int a = 0; a < count; ++a) {
+    if (a == 0) b(a) = w;
+    else if (a == 1) b(a) = w * x;
+    else {
+      const double next = ((2.0 * a - 1.0) * x * cur - (a - 1.0) * prev) / a;
+      prev = cur;
+      cur = next;
+      b(a) = w * cur;
+    }
+  }
+  return b;
+}
+
+void check_inputs(std::size_t points, const std::vector<double>& params, int degree, const char* what) {
+  if (params.size() < 3 || params.front() != 0.0 || params.back() != 1.0)
+    throw bad_input(std::string(what) + ": need at least 3 parameters from 0 to 1");
+  if (points != params.size() && points != params.size() * params.size())
+    throw bad_input(std::string(what) + ": " + std::to_string(points) + " points do not match " +
+                    std::to_string(params.size()) + " parameters");
+  if (degree < 2) throw bad_input(std::string(what) + ": degree must be at least 2, got " + std::to_string(degree));
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector3d> smooth_polyline(const std::vector<Eigen::Vector3d>& points,
+                                             const std::vector<double>& params, int degree) {
+  check_inputs(points.size(), params, degree, "smooth_polyline");
+  const int m = static_cast<int>(params.size());
+  const int nb = std::min(degree - 1, m - 2);  // never more unknowns than inner samples
+  const Eigen::Vector3d p0 = points.front(), p1 = points.back();
+  Eigen::MatrixXd A(m - 2, nb), rhs(m - 2, 3);
+  for (int k = 1; k + 1 < m; ++k) {
+    const double t = params[static_cast<std::size_t>(k)];
+    A.row(k - 1) = bubbles(t, nb).transpose();
+    rhs.row(k - 1) = (points[static_cast<std::size_t>(k)] - ((1.0 - t) * p0 + t * p1)).transpose();
+  }
+  const Eigen::MatrixXd c = A.colPivHouseholderQr().solve(rhs);
+  std::vector<Eigen::Vector3d> out(points.size());
+  out.front() = p0;
+  out.back() = p1;
+  for (int k = 1; k + 1 < m; ++k) {
+    const double t = params[static_cast<std::size_t>(k)];
+    out[static_cast<std::size_t>(k)] = (1.0 - t) * p0 + t * p1 + (bubbles(t, nb).transpose() * c).transpose();
+  }
+  return out;
+}
+
+std::vector<Eigen::Vector3d> smooth_grid(const std::vector<Eigen::Vector3d>& grid, const std::vector<double>& params,
+                                         int degree) {
+  check_inputs(grid.size(), params, degree, "smooth_grid");
+  const int m = static_cast<int>(params.size());
+  if (grid.size() != static_cast<std::size_t>(m) * m) throw bad_input("smooth_grid: the grid is not m x m");
+  auto at = [&](int i, int j) { return static_cast<std::size_t>(i + m * j); };
+  std::vector<Eigen::Vector3d> out(grid.size());
+  // The four sides, each from its own samples in increasing index order.
+  auto side = [&](auto index) {
+    std::vector<Eigen::Vector3d> s(static_cast<std::size_t>(m));
+    for (int k = 0; k < m; ++k) s[static_cast<std::size_t>(k)] = grid[index(k)];
+    s = smooth_polyline(s, params, degree);
+    for (int k = 0; k < m; ++k) out[index(k)] = s[static_cast<std::size_t>(k)];
+  };
+  side([&](int k) { return at(k, 0); });
+  side([&](int k) { return at(k, m - 1); });
+  side([&](int k) { return at(0, k); });
+  side([&](int k) { return at(m - 1, k); });
+  // Coons patch of the smoothed sides: exact on the sides.
+  auto coons = [&](int i, int j) {
+    const double s = params[static_cast<std::size_t>(i)], t = params[static_cast<std::size_t>(j)];
+    return Eigen::Vector3d((1.0 - t) * out[at(i, 0)] + t * out[at(i, m - 1)] + (1.0 - s) * out[at(0, j)] +
+                           s * out[at(m - 1, j)] -
+                           ((1.0 - s) * (1.0 - t) * out[at(0, 0)] + s * (1.0 - t) * out[at(m - 1, 0)] +
+                            (1.0 - s) * t * out[at(0, m - 1)] + s * t * out[at(m - 1, m - 1)]));
+  };
+  const int nb = std::min(degree - 1, m - 2);
+  const int inner = (m - 2) * (m - 2);
+  Eigen::MatrixXd A(inner, nb * nb), rhs(inner, 3);
+  std::vector<Eigen::VectorXd> b(static_cast<std::size_t>(m));
+  for (int k = 0; k < m; ++k) b[static_cast<std::size_t>(k)] = bubbles(params[static_cast<std::size_t>(k)], nb);
+  int row = 0;
+  for (int j = 1; j + 1 < m; ++j)
+    for (int i = 1; i + 1 < m; ++i, ++row) {
+      for (int bj = 0; bj < nb; ++bj)
+        for (int bi = 0; bi < nb; ++bi) A(row, bi + nb * bj) = b[static_cast<std::size_t>(i)](bi) * b[static_cast<std::size_t>(j)](bj);
+      rhs.row(row) = (grid[at(i, j)] - coons(i, j)).transpose();
+    }
+  const Eigen::MatrixXd c = A.colPivHouseholderQr().solve(rhs);
+  row = 0;
+  for (int j = 1; j + 1 < m; ++j)
+    for (int i = 1; i + 1 < m; ++i, ++row) out[at(i, j)] = coons(i, j) + (A.row(row) * c).transpose();
+  return out;
+}
+
+}  // namespace igaprep::param

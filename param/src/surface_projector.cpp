@@ -1,0 +1,46 @@
+#include "igaprep/param/surface_projector.h"
+
+#include <vector>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include "igaprep/core/error.h"
+
+namespace igaprep::param {
+
+namespace {
+using K = CGAL::Simple_cartesian<double>;
+using Triangle = K::Triangle_3;
+using Primitive = CGAL::AABB_triangle_primitive<K, std::vector<Triangle>::const_iterator>;
+}  // namespace
+
+struct SurfaceProjector::Tree {
+  std::vector<Triangle> triangles;
+  CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree;
+};
+
+SurfaceProjector::SurfaceProjector(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) : tree_(std::make_unique<Tree>()) {
+  if (F.rows() == 0 || F.cols() != 3) throw bad_input("surface projector: need at least one triangle");
+  auto point = [&](int v) {
+    if (v < 0 || v >= V.rows()) throw bad_input("surface projector: triangle vertex " + std::to_string(v) + " out of range");
+    return K::Point_3(V(v, 0), V(v, 1), V(v, 2));
+  };
+  tree_->triangles.reserve(static_cast<std::size_t>(F.rows()));
+  for (Eigen::Index f = 0; f < F.rows(); ++f) tree_->triangles.emplace_back(point(F(f, 0)), point(F(f, 1)), point(F(f, 2)));
+  tree_->tree.insert(tree_->triangles.begin(), tree_->triangles.end());
+  tree_->tree.accelerate_distance_queries();
+}
+
+SurfaceProjector::~SurfaceProjector() = default;
+SurfaceProjector::SurfaceProjector(SurfaceProjector&&) noexcept = default;
+SurfaceProjector& SurfaceProjector::operator=(SurfaceProjector&&) noexcept = default;
+
+Eigen::Vector3d SurfaceProjector::closest(const Eigen::Vector3d& p) const {
+  const K::Point_3 q = tree_->tree.closest_point(K::Point_3(p.x(), p.y(), p.z()));
+  return {q.x(), q.y(), q.z()};
+}
+
+}  // namespace igaprep::param

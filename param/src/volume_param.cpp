@@ -75,6 +75,42 @@ void orient_block(SampledBlock& b, int m) {
       }
 }
 
+// Fills the rows j of a shell block (samples i + m j + m^2 k) that were not
+// traced by linear interpolation across j between the traced rows 0, mid
+// (if mid >= 0) and m - 1, at every i and k.
+void rule_rows(Eigen::MatrixXd& s, int m, const std::vector<double>& params, int mid) {
+  auto row = [&](int i, int j, int k) { return static_cast<Eigen::Index>(i + m * j + m * m * k); };
+  for (int k = 0; k < m; ++k)
+    for (int j = 1; j + 1 < m; ++j) {
+      if (j == mid) continue;
+      const int a = mid > 0 && j > mid ? mid : 0, b = mid > 0 && j < mid ? mid : m - 1;
+      const double t = (params[static_cast<std::size_t>(j)] - params[static_cast<std::size_t>(a)]) /
+                       (params[static_cast<std::size_t>(b)] - params[static_cast<std::size_t>(a)]);
+      for (int i = 0; i < m; ++i) s.row(row(i, j, k)) = lerp(s.row(row(i, a, k)).transpose(), s.row(row(i, b, k)).transpose(), t).transpose();
+    }
+}
+
+// The ruled rows' points on the block's outer face (k = 0) go back onto the
+// outer level surface, those on the inner face (k = m - 1) onto the inner one
+// (none: the core face, kept), and the points between move by the blend of
+// the two corrections (near the crest a layer can be thinner than they are).
+void put_back_on_levels(Eigen::MatrixXd& s, int m, const std::vector<double>& params, int mid,
+                        const SurfaceProjector& outer_surface, const SurfaceProjector* inner_surface) {
+  for (int j = 1; j + 1 < m; ++j) {
+    if (j == mid) continue;
+    for (int i = 0; i < m; ++i) {
+      const Eigen::Index outer = i + m * j, inner = outer + static_cast<Eigen::Index>(m) * m * (m - 1);
+      const Eigen::RowVector3d d_outer = outer_surface.closest(s.row(outer).transpose()).transpose() - s.row(outer);
+      const Eigen::RowVector3d d_inner =
+          inner_surface ? Eigen::RowVector3d(inner_surface->closest(s.row(inner).transpose()).transpose() - s.row(inner))
+                        : Eigen::RowVector3d::Zero();
+      for (int k = 0; k < m; ++k)
+        s.row(outer + static_cast<Eigen::Index>(m) * m * k) +=
+            (1.0 - params[static_cast<std::size_t>(k)]) * d_outer + params[static_cast<std::size_t>(k)] * d_inner;
+    }
+  }
+}
+
 }  // namespace
 
 VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, const BaseLayout& layout,
@@ -203,6 +239,9 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
     // pulls them apart: they bunch up (a sample spacing drops to a tenth of
     // its neighbours') and the fit folds.
     bool ruled = false;
+    // Strategy 1 crest fans: ruled in two halves, through the streamline
+    // from this row (along M's binormal) as well; -1: no middle row.
+    int ruled_mid = -1;
   };
   std::vector<ShellBase> core_faces;
   auto add_block = [&](BlockKind kind, int source, int layer, int material, Eigen::MatrixXd samples, int t1_side) {
@@ -218,6 +257,7 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
     out.blocks.push_back(std::move(b));
   };
   const int core_material = n - 1;
+  const int mid = (m - 1) / 2;
   if (strategy1) {
     for (std::size_t r = 0; r < rect.size(); ++r) {
       core_faces.push_back({rect[r].base, rect[r].top});
@@ -228,11 +268,16 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
       const RectGrid& g = rect[static_cast<std::size_t>(seg.rectangle)];
       ShellBase fan;
       fan.collapsed = true;
+      fan.ruled = true;
+      fan.ruled_mid = mid;
       for (int j = 0; j < m; ++j)
         for (int k = 0; k < m; ++k) {
           const int q = side_index(seg.side, k);
           fan.face.push_back(g.base[q]);
-          fan.start.push_back(lerp(g.top[q], g.bottom[q], params[j]));  // the fan from D+ through the binormal to D-
+          // The fan from D+ through the binormal (the middle row) to D-: only
+          // those three rows are traced, the others are ruled between them.
+          fan.start.push_back(j == mid ? Eigen::Vector3d(g.base[q] + offset * g.lean[q].normalized())
+                                       : lerp(g.top[q], g.bottom[q], params[j]));
         }
       core_faces.push_back(std::move(fan));
     }
@@ -300,14 +345,23 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
   Progress progress("streamlines", core_faces.size());
   for (std::size_t f = 0; f < core_faces.size(); ++f) {
     const ShellBase& face = core_faces[f];
-    std::vector<StreamlineColumn> cols;
-    cols.reserve(static_cast<std::size_t>(m * m));
-    for (const Eigen::Vector3d& y : face.start) cols.push_back(trace_column(probe, y, options.stream_step * diag, &hint));
-    out.streamlines += m * m;
+    // A ruled face needs the columns of its rows j = 0, m - 1 (and the middle one) only.
+    auto traced = [&](int q) {
+      const int j = q / m;
+      return !face.ruled || j == 0 || j == m - 1 || j == face.ruled_mid;
+    };
+    std::vector<StreamlineColumn> cols(static_cast<std::size_t>(m * m));
+    for (int q = 0; q < m * m; ++q)
+      if (traced(q)) {
+        cols[static_cast<std::size_t>(q)] =
+            trace_column(probe, face.start[static_cast<std::size_t>(q)], options.stream_step * diag, &hint);
+        ++out.streamlines;
+      }
     for (int layer = 1; layer <= n; ++layer) {
       const double lo = static_cast<double>(layer - 1) / n;
       Eigen::MatrixXd s(m * m * m, 3);
       for (int q = 0; q < m * m; ++q) {
+        if (!traced(q)) continue;
         const StreamlineColumn& col = cols[static_cast<std::size_t>(q)];
         // Arc lengths of the layer's outer (w = lo) and inner ends; the inner
         // end of the innermost layer is the core face itself (arc 0).
@@ -322,26 +376,9 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
         }
       }
       if (face.ruled) {
-        for (int k = 0; k < m; ++k)
-          for (int j = 1; j + 1 < m; ++j)
-            for (int i = 0; i < m; ++i)
-              s.row(i + m * j + m * m * k) = lerp(s.row(i + m * m * k).transpose(),
-                                                  s.row(i + m * (m - 1) + m * m * k).transpose(), params[j]).transpose();
-        // The layer's outer row goes back onto T(layer), its inner one onto
-        // T(layer + 1) (the innermost layer's is the core face), and the rows
-        // between move by the blend of those two corrections (the layers can
-        // be thinner near the crest than the corrections).
-        for (int j = 1; j + 1 < m; ++j)
-          for (int i = 0; i < m; ++i) {
-            const Eigen::Index outer = i + m * j, inner = outer + m * m * (m - 1);
-            const Eigen::RowVector3d d_outer =
-                surface[static_cast<std::size_t>(layer - 1)].closest(s.row(outer).transpose()).transpose() - s.row(outer);
-            const Eigen::RowVector3d d_inner =
-                layer < n ? Eigen::RowVector3d(surface[static_cast<std::size_t>(layer)].closest(s.row(inner).transpose()).transpose() -
-                                               s.row(inner))
-                          : Eigen::RowVector3d::Zero();
-            for (int k = 0; k < m; ++k) s.row(outer + m * m * k) += (1.0 - params[k]) * d_outer + params[k] * d_inner;
-          }
+        rule_rows(s, m, params, face.ruled_mid);
+        const SurfaceProjector* inner = layer < n ? &surface[static_cast<std::size_t>(layer)] : nullptr;
+        put_back_on_levels(s, m, params, face.ruled_mid, surface[static_cast<std::size_t>(layer - 1)], inner);
       }
       add_block(BlockKind::Shell, static_cast<int>(f), layer, layer - 1, std::move(s), layer == 1 ? 4 : -1);
       if (layer == n && face.collapsed) out.blocks.back().collapsed[5] = true;

@@ -129,26 +129,41 @@ TEST(PipelineModels, Sphere2MeetsEveryCriterion) {
   EXPECT_EQ(r.segments, 4);
 }
 
-// ring2 and torus3 meet the topology, fidelity, volume, material and
-// convergence criteria, but not yet the certificate: a few shell elements
-// near the corners of M come out negative (docs/decomposition.md, "Known
-// limits"). The bound on their share keeps that from getting worse unnoticed.
-void expect_all_but_certificate(const std::string& name, int surfaces, int rectangles, int segments,
-                                double negative_share) {
-  const ModelRun r = run_model(name);
-  expect_model_facts(r, surfaces);
+// ring2 meets every criterion but the minimum scaled Jacobian: every element
+// is certified positive, the smallest scaled Jacobian (about 0.14, at the
+// crest corners next to the hole corners of M) is below the issue's 0.2
+// (docs/decomposition.md, "Known limits"); the bound keeps it from getting
+// worse unnoticed.
+TEST(PipelineModels, Ring2IsCertified) {
+  const ModelRun r = run_model("ring2");
+  expect_model_facts(r, 2);
   const json& s = r.report.at("summary");
-  EXPECT_EQ(r.rectangles, rectangles);
-  EXPECT_EQ(r.segments, segments);
-  EXPECT_LT(s.at("negative").get<double>(), negative_share * s.at("elements").get<double>());
+  EXPECT_EQ(r.rectangles, 8);
+  EXPECT_EQ(r.segments, 16);
+  EXPECT_EQ(s.at("negative").get<int>(), 0);
+  EXPECT_EQ(s.at("undecided").get<int>(), 0);
+  EXPECT_EQ(s.at("degenerate").get<int>(), 0);
+  EXPECT_EQ(s.at("positive").get<int>(), s.at("elements").get<int>());
+  EXPECT_GE(s.at("min_scaled_jacobian").get<double>(), 0.1);
 }
 
-TEST(PipelineModels, Ring2) { expect_all_but_certificate("ring2", 2, 8, 16, 0.005); }
-TEST(PipelineModels, Torus3) { expect_all_but_certificate("torus3", 1, 18, 32, 0.005); }
+// torus3 meets the topology, fidelity, volume, material and convergence
+// criteria, but not yet the certificate: a few shell elements at corners of
+// the core's faces come out negative (21 of 36,288). The bound on their
+// share keeps that from getting worse unnoticed.
+TEST(PipelineModels, Torus3AllButTheCertificate) {
+  const ModelRun r = run_model("torus3");
+  expect_model_facts(r, 1);
+  const json& s = r.report.at("summary");
+  EXPECT_EQ(r.rectangles, 18);
+  EXPECT_EQ(r.segments, 32);
+  EXPECT_LT(s.at("negative").get<double>(), 0.001 * s.at("elements").get<double>());
+}
 
 // Strategy 1 (no core, the crest volumes are fans collapsed onto M's
 // boundary): completes, and the collapsed sides show up as degenerate
-// elements, not as unmatched sides.
+// elements, not as unmatched sides. Not yet met: no negative element (52 of
+// 2,592 are, about 2 %; the bound keeps that from getting worse).
 TEST(PipelineModels, Sphere2Strategy1Completes) {
   std::ifstream in(models_dir() + "/sphere2/case.json");
   json c = json::parse(in);
@@ -160,6 +175,7 @@ TEST(PipelineModels, Sphere2Strategy1Completes) {
   EXPECT_NE(r.cli.out.find("strategy 1"), std::string::npos);
   const json& s = r.report.at("summary");
   EXPECT_GT(s.at("degenerate").get<int>(), 0);
+  EXPECT_LT(s.at("negative").get<double>(), 0.03 * s.at("elements").get<double>());
   EXPECT_EQ(r.report.at("pipeline").at("figures").at("unmatched_sides").get<int>(), 0);
   // 1 rectangle x 2 sides + 4 fans, times 2 layers.
   EXPECT_EQ(r.model.patches.size(), 12u);

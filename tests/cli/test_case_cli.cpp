@@ -116,7 +116,7 @@ TEST(CaseCli, RunWithoutCaseUsesTheDefaultModel) {
   const auto dir = scratch_dir("run_default");
   const auto r = run_cli("run -o " + dir);
   // 0: the model passed every check; 2: it was made but a check failed
-  // (ring2 still has a few negative elements, docs/decomposition.md).
+  // (docs/decomposition.md, "Known limits").
   ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 2) << r.out;
   EXPECT_NE(r.out.find("case 'ring2'"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("tetmesh"), std::string::npos) << r.out;
@@ -151,6 +151,9 @@ TEST(CaseCli, DecompositionAndFitKeysAreChecked) {
       {R"("decomposition": {"theta": 2.0})", "decomposition.theta"},
       {R"("decomposition": {"inset": 1.0})", "decomposition.inset"},
       {R"("decomposition": {"smoothing": -1})", "decomposition.smoothing"},
+      {R"("decomposition": {"surface_degree": 2.5})", "decomposition.surface_degree"},
+      {R"("decomposition": {"surface_degree": 13})", "decomposition.surface_degree"},
+      {R"("decomposition": {"sliding_uv": "yes"})", "decomposition.sliding_uv"},
       {R"("fit": {"elements": 0})", "fit.elements"},
       {R"("fit": {"degree": 2.5})", "fit.degree"},
       {R"("fit": {"knots": 3})", "fit.knots"},

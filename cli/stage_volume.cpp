@@ -21,8 +21,8 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
 
   StageTimer t_decomp;
   // M is cut along iso-lines of a (u, v) whose sides slide (sliding_uv.h):
-  // its corners are then right angles in 3D; the fixed-boundary (u, v) of the
-  // midsurface stays when the sliding one folds.
+  // its corners are closer to right angles in 3D; the midsurface's (u, v)
+  // stays when the sliding one folds.
   param::Polycube2D pc = mid.polycube;
   param::SlidingUv sliding;
   if (c.volume.sliding_uv) sliding = param::sliding_uv(mid.m0trim.mesh, pc);

@@ -29,12 +29,15 @@ Eigen::VectorXd bubbles(double t, int count) {
   return b;
 }
 
-void check_inputs(std::size_t points, const std::vector<double>& params, int degree, const char* what) {
+void check_inputs(std::size_t points, std::size_t expected, const std::vector<double>& params, int degree,
+                  const char* what) {
   if (params.size() < 3 || params.front() != 0.0 || params.back() != 1.0)
     throw bad_input(std::string(what) + ": need at least 3 parameters from 0 to 1");
-  if (points != params.size() && points != params.size() * params.size())
-    throw bad_input(std::string(what) + ": " + std::to_string(points) + " points do not match " +
-                    std::to_string(params.size()) + " parameters");
+  for (std::size_t k = 1; k < params.size(); ++k)
+    if (!(params[k] > params[k - 1])) throw bad_input(std::string(what) + ": the parameters are not ascending");
+  if (points != expected)
+    throw bad_input(std::string(what) + ": " + std::to_string(points) + " points for " + std::to_string(params.size()) +
+                    " parameters (expected " + std::to_string(expected) + ")");
   if (degree < 2) throw bad_input(std::string(what) + ": degree must be at least 2, got " + std::to_string(degree));
 }
 
@@ -42,7 +45,7 @@ void check_inputs(std::size_t points, const std::vector<double>& params, int deg
 
 std::vector<Eigen::Vector3d> smooth_polyline(const std::vector<Eigen::Vector3d>& points,
                                              const std::vector<double>& params, int degree) {
-  check_inputs(points.size(), params, degree, "smooth_polyline");
+  check_inputs(points.size(), params.size(), params, degree, "smooth_polyline");
   const int m = static_cast<int>(params.size());
   const int nb = std::min(degree - 1, m - 2);  // never more unknowns than inner samples
   const Eigen::Vector3d p0 = points.front(), p1 = points.back();
@@ -65,9 +68,8 @@ std::vector<Eigen::Vector3d> smooth_polyline(const std::vector<Eigen::Vector3d>&
 
 std::vector<Eigen::Vector3d> smooth_grid(const std::vector<Eigen::Vector3d>& grid, const std::vector<double>& params,
                                          int degree) {
-  check_inputs(grid.size(), params, degree, "smooth_grid");
+  check_inputs(grid.size(), params.size() * params.size(), params, degree, "smooth_grid");
   const int m = static_cast<int>(params.size());
-  if (grid.size() != static_cast<std::size_t>(m) * m) throw bad_input("smooth_grid: the grid is not m x m");
   auto at = [&](int i, int j) { return static_cast<std::size_t>(i + m * j); };
   std::vector<Eigen::Vector3d> out(grid.size());
   // The four sides, each from its own samples in increasing index order.

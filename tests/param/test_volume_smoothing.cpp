@@ -421,7 +421,7 @@ TEST(GridSmoothing, RejectsBadInput) {
 // param/src/grid_smoothing.cpp accepts m or m^2 points for both functions, so
 // smooth_polyline takes m^2 points, uses points.back() as the end, and returns
 // m^2 points of which all but m are uninitialized. Enable with the fix.
-TEST(GridSmoothing, DISABLED_PolylineRejectsAGridsWorthOfPoints) {
+TEST(GridSmoothing, PolylineRejectsAGridsWorthOfPoints) {
   const auto t = sample_params();
   const std::size_t m = t.size();
   std::vector<Eigen::Vector3d> grid(m * m, Eigen::Vector3d(1.0, 2.0, 3.0));

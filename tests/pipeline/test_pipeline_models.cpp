@@ -115,16 +115,22 @@ void expect_model_facts(const ModelRun& r, int surfaces) {
   EXPECT_LT(v.at("levels").at(1).at("l2_error").get<double>(), v.at("levels").at(0).at("l2_error").get<double>());
 }
 
+// Every element certified positive (none negative, degenerate or
+// undecided) and the smallest scaled Jacobian at least min_scaled_jacobian.
+void expect_certified(const json& summary, double min_scaled_jacobian) {
+  EXPECT_EQ(summary.at("negative").get<int>(), 0);
+  EXPECT_EQ(summary.at("undecided").get<int>(), 0);
+  EXPECT_EQ(summary.at("degenerate").get<int>(), 0);
+  EXPECT_EQ(summary.at("positive").get<int>(), summary.at("elements").get<int>());
+  EXPECT_GE(summary.at("min_scaled_jacobian").get<double>(), min_scaled_jacobian);
+}
+
 TEST(PipelineModels, Sphere2MeetsEveryCriterion) {
   const ModelRun r = run_model("sphere2");
   expect_model_facts(r, 2);
   const json& s = r.report.at("summary");
   EXPECT_EQ(r.cli.exit_code, 0) << r.cli.out;
-  EXPECT_EQ(s.at("negative").get<int>(), 0);
-  EXPECT_EQ(s.at("undecided").get<int>(), 0);
-  EXPECT_EQ(s.at("degenerate").get<int>(), 0);
-  EXPECT_EQ(s.at("positive").get<int>(), s.at("elements").get<int>());
-  EXPECT_GE(s.at("min_scaled_jacobian").get<double>(), 0.2);
+  expect_certified(s, 0.2);
   EXPECT_EQ(r.rectangles, 1);
   EXPECT_EQ(r.segments, 4);
 }
@@ -140,11 +146,7 @@ TEST(PipelineModels, Ring2IsCertified) {
   const json& s = r.report.at("summary");
   EXPECT_EQ(r.rectangles, 8);
   EXPECT_EQ(r.segments, 16);
-  EXPECT_EQ(s.at("negative").get<int>(), 0);
-  EXPECT_EQ(s.at("undecided").get<int>(), 0);
-  EXPECT_EQ(s.at("degenerate").get<int>(), 0);
-  EXPECT_EQ(s.at("positive").get<int>(), s.at("elements").get<int>());
-  EXPECT_GE(s.at("min_scaled_jacobian").get<double>(), 0.1);
+  expect_certified(s, 0.1);
 }
 
 // torus3 meets the topology, fidelity, volume, material and convergence

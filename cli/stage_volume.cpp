@@ -5,6 +5,7 @@
 
 #include "igaprep/mesh/write_vtu.h"
 #include "igaprep/param/base_layout.h"
+#include "igaprep/param/blocks_tet_mesh.h"
 #include "igaprep/param/decomposition_mesh.h"
 #include "igaprep/param/inset_base.h"
 #include "igaprep/param/sliding_uv.h"
@@ -13,6 +14,41 @@
 #include "stage_timer.h"
 
 namespace igaprep::cli {
+
+namespace {
+
+double diag_of(const Eigen::MatrixXd& V) { return (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm(); }
+
+// The blocks as one conforming tet mesh (blocks_tet_mesh.h): the
+// decomposition surfaces are its faces. Every block's grid is thinned to at
+// most 8 cells per direction (the same samples on both sides of a shared
+// face), or ring2's mesh would have 3 million tets.
+void write_blocks_mesh(const param::VolumeParam& vp, double diag, const std::string& dir) {
+  const int m = static_cast<int>(vp.params.size());
+  int stride = 1;
+  while ((m - 1) % (2 * stride) == 0 && (m - 1) / stride > 8) stride *= 2;
+  const int mc = (m - 1) / stride + 1;
+  std::vector<param::SampledBlock> coarse = vp.blocks;
+  for (std::size_t b = 0; b < coarse.size(); ++b) {
+    Eigen::MatrixXd s(mc * mc * mc, 3);
+    for (int k = 0; k < mc; ++k)
+      for (int j = 0; j < mc; ++j)
+        for (int i = 0; i < mc; ++i)
+          s.row(i + mc * (j + mc * k)) = vp.blocks[b].samples.row(stride * i + m * (stride * j + m * stride * k));
+    coarse[b].samples = std::move(s);
+  }
+  const param::BlocksTetMesh bm = param::blocks_tet_mesh(coarse, 1e-9 * diag);
+  mesh::VtuMesh v = mesh::vtu_tets(bm.tets);
+  v.add_cell_data("block", bm.block);
+  mesh::write_vtu((std::filesystem::path(dir) / "decomposition_blocks.vtu").string(), v);
+  mesh::write_vtu((std::filesystem::path(dir) / "decomposition_blocks_faces.vtu").string(), mesh::vtu_marked_faces(bm.tets));
+  std::printf("           blocks as one tet mesh (%d cells per block direction): %lld tets, %d merged points, %d "
+              "non-positive, %d open faces, %d non-manifold faces; wrote %s/decomposition_blocks*.vtu\n",
+              mc - 1, static_cast<long long>(bm.tets.T.rows()), bm.merged_points, bm.non_positive_tets, bm.open_faces,
+              bm.nonmanifold_faces, dir.c_str());
+}
+
+}  // namespace
 
 VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfaces,
                                     const param::MidsurfaceResult& mid, const std::string& dir, bool keep_intermediate) {
@@ -100,6 +136,7 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
     }
     v.add_point_data("block", block);
     mesh::write_vtu((fs::path(dir) / "decomposition_samples.vtu").string(), v);
+    write_blocks_mesh(vp, diag_of(H.tets.V), dir);
   }
   for (const auto& b : vp.blocks) {
     spline::Patch p = spline::fit_block(b.samples, fit_options);
@@ -107,7 +144,7 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
     mp.patches.push_back(std::move(p));
   }
   const Eigen::MatrixXd& V = H.tets.V;
-  const double diag = (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm();
+  const double diag = diag_of(V);
   out.stitched = spline::stitch_control_points(mp, 1e-9 * diag, &out.max_stitch);
   spline::find_interfaces(mp, 1e-12 * diag);
   // Interfaces between materials lie on the Ti between them.

@@ -4,31 +4,12 @@
 
 #include <vector>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Simple_cartesian.h>
-
 #include "igaprep/core/error.h"
 
 namespace igaprep::param {
 
-namespace {
-using K = CGAL::Simple_cartesian<double>;
-using Triangle = K::Triangle_3;
-using TriIterator = std::vector<Triangle>::const_iterator;
-using Primitive = CGAL::AABB_triangle_primitive<K, TriIterator>;
-}  // namespace
-
-// The (u, v) triangles as flat 3D triangles (z = 0), so CGAL's AABB tree
-// answers "nearest triangle" queries.
-struct SheetSampler::Tree {
-  std::vector<Triangle> triangles;
-  CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree;
-};
-
 SheetSampler::SheetSampler(const mesh::TriMesh& sheet, const Eigen::MatrixXd& uv, int smoothing_rounds)
-    : sheet_(sheet), uv_(uv), tree_(std::make_unique<Tree>()) {
+    : sheet_(sheet), uv_(uv) {
   const auto& V = sheet.V;
   const auto& F = sheet.F;
   if (uv.rows() != V.rows() || uv.cols() != 2 || F.rows() == 0)
@@ -37,7 +18,6 @@ SheetSampler::SheetSampler(const mesh::TriMesh& sheet, const Eigen::MatrixXd& uv
   du_ = Eigen::MatrixXd::Zero(V.rows(), 3);
   dv_ = Eigen::MatrixXd::Zero(V.rows(), 3);
   Eigen::VectorXd weight = Eigen::VectorXd::Zero(V.rows());
-  tree_->triangles.reserve(static_cast<std::size_t>(F.rows()));
   for (Eigen::Index f = 0; f < F.rows(); ++f) {
     const int a = F(f, 0), b = F(f, 1), c = F(f, 2);
     const Eigen::Vector3d e1 = V.row(b) - V.row(a), e2 = V.row(c) - V.row(a);
@@ -55,8 +35,6 @@ SheetSampler::SheetSampler(const mesh::TriMesh& sheet, const Eigen::MatrixXd& uv
       dv_.row(v) += area * Xv.transpose();
       weight(v) += area;
     }
-    tree_->triangles.emplace_back(K::Point_3(uv(a, 0), uv(a, 1), 0.0), K::Point_3(uv(b, 0), uv(b, 1), 0.0),
-                                  K::Point_3(uv(c, 0), uv(c, 1), 0.0));
   }
   for (Eigen::Index v = 0; v < V.rows(); ++v) {
     if (weight(v) > 0.0) {
@@ -88,16 +66,17 @@ SheetSampler::SheetSampler(const mesh::TriMesh& sheet, const Eigen::MatrixXd& uv
       dv_.row(v) = b.row(v) / weight(v);
     }
   }
-  tree_->tree.insert(tree_->triangles.cbegin(), tree_->triangles.cend());
-  tree_->tree.accelerate_distance_queries();
+  // "Nearest triangle" queries in (u, v): the (u, v) triangles as flat 3D ones.
+  Eigen::MatrixXd flat = Eigen::MatrixXd::Zero(uv.rows(), 3);
+  flat.leftCols(2) = uv;
+  flat_ = std::make_unique<SurfaceProjector>(flat, F);
 }
 
 SheetSampler::~SheetSampler() = default;
 
 SheetPoint SheetSampler::at(const Eigen::Vector2d& q) const {
-  const auto hit = tree_->tree.closest_point_and_primitive(K::Point_3(q.x(), q.y(), 0.0));
-  const int f = static_cast<int>(hit.second - tree_->triangles.cbegin());
-  const Eigen::Vector2d p(hit.first.x(), hit.first.y());
+  int f = -1;
+  const Eigen::Vector2d p = flat_->closest(Eigen::Vector3d(q.x(), q.y(), 0.0), &f).head<2>();
   const int a = sheet_.F(f, 0), b = sheet_.F(f, 1), c = sheet_.F(f, 2);
   const Eigen::Vector2d t1 = uv_.row(b) - uv_.row(a), t2 = uv_.row(c) - uv_.row(a), r = p - uv_.row(a).transpose();
   const double det = t1.x() * t2.y() - t1.y() * t2.x();

@@ -38,9 +38,10 @@ SurfaceProjector::~SurfaceProjector() = default;
 SurfaceProjector::SurfaceProjector(SurfaceProjector&&) noexcept = default;
 SurfaceProjector& SurfaceProjector::operator=(SurfaceProjector&&) noexcept = default;
 
-Eigen::Vector3d SurfaceProjector::closest(const Eigen::Vector3d& p) const {
-  const K::Point_3 q = tree_->tree.closest_point(K::Point_3(p.x(), p.y(), p.z()));
-  return {q.x(), q.y(), q.z()};
+Eigen::Vector3d SurfaceProjector::closest(const Eigen::Vector3d& p, int* triangle) const {
+  const auto hit = tree_->tree.closest_point_and_primitive(K::Point_3(p.x(), p.y(), p.z()));
+  if (triangle) *triangle = static_cast<int>(hit.second - tree_->triangles.cbegin());
+  return {hit.first.x(), hit.first.y(), hit.first.z()};
 }
 
 }  // namespace igaprep::param

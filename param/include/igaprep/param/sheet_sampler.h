@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "igaprep/mesh/tri_mesh.h"
+#include "igaprep/param/surface_projector.h"
 
 namespace igaprep::param {
 
@@ -35,11 +36,10 @@ class SheetSampler {
   SheetPoint at(const Eigen::Vector2d& uv) const;
 
  private:
-  struct Tree;
   const mesh::TriMesh& sheet_;
   const Eigen::MatrixXd& uv_;
   Eigen::MatrixXd normal_, du_, dv_;  // per vertex
-  std::unique_ptr<Tree> tree_;
+  std::unique_ptr<SurfaceProjector> flat_;  // the (u, v) triangles at z = 0
 };
 
 }  // namespace igaprep::param

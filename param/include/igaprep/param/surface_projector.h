@@ -1,6 +1,7 @@
 #pragma once
 // Closest points on a triangle surface (CGAL's AABB tree): puts sampled
-// points back onto T1 or a Ti after they were moved across a block face.
+// points back onto T1 or a Ti after they were moved across a block face, and
+// finds the (u, v) triangle holding a point for SheetSampler (flat, z = 0).
 #include <memory>
 
 #include <Eigen/Core>
@@ -15,7 +16,9 @@ class SurfaceProjector {
   SurfaceProjector(SurfaceProjector&&) noexcept;
   SurfaceProjector& operator=(SurfaceProjector&&) noexcept;
 
-  Eigen::Vector3d closest(const Eigen::Vector3d& p) const;
+  // The closest point on the surface; `triangle` (if given) receives the
+  // row of F it lies on.
+  Eigen::Vector3d closest(const Eigen::Vector3d& p, int* triangle = nullptr) const;
 
  private:
   struct Tree;

@@ -68,6 +68,20 @@ double coefficient_error(const MultiPatch& solved, const std::function<Eigen::Ve
   return e;
 }
 
+// The linear field A x + c, reproduced exactly by any patch.
+Eigen::Vector3d linear_field(const Eigen::Vector3d& x) { return kA * x + kC; }
+
+// Solves with u prescribed on every side labelled T1 (with the extra
+// quadrature points distorted patches need for exactness).
+auto solve_with_t1_prescribed(const MultiPatch& mp, const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& u,
+                              int refine = 0) {
+  iga_check::ElasticityProblem problem;
+  problem.prescribed = {{"T1", u}};
+  iga_check::ElasticityOptions options;
+  options.extra_quadrature = kExtra;
+  options.refine = refine;
+  return iga_check::solve_elasticity(mp, problem, options);
+}
 
 }  // namespace
 
@@ -79,13 +93,8 @@ TEST(SolvePrescribed, LinearFieldOnCurvedDistortedMultipatchIsExact) {
   label_boundaries(mp, [](const Eigen::Vector3d&) { return std::string("T1"); });
   ASSERT_EQ(mp.boundaries.size(), 14u);
   ASSERT_EQ(mp.labels[0], "T1");
-  const auto u = [](const Eigen::Vector3d& x) { return Eigen::Vector3d(kA * x + kC); };
-
-  iga_check::ElasticityProblem problem;
-  problem.prescribed = {{"T1", u}};
-  iga_check::ElasticityOptions options;
-  options.extra_quadrature = kExtra;
-  const auto sol = iga_check::solve_elasticity(mp, problem, options);
+  const auto u = linear_field;
+  const auto sol = solve_with_t1_prescribed(mp, u);
   EXPECT_GT(sol.report.unknowns, 0);
   EXPECT_EQ(sol.report.prescribed_dofs, sol.report.fixed_dofs);
   EXPECT_GT(sol.report.prescribed_dofs, 0);
@@ -108,8 +117,7 @@ TEST(SolvePrescribed, LinearFieldOnCurvedDistortedMultipatchIsExact) {
     EXPECT_LT((pt.stress - sigma).norm(), 1e-8 * sigma.norm()) << "patch " << p;
   }
   // After refinement (projection on a finer boundary space), still exact.
-  options.refine = 1;
-  const auto fine = iga_check::solve_elasticity(mp, problem, options);
+  const auto fine = solve_with_t1_prescribed(mp, u, 1);
   EXPECT_LT(coefficient_error(fine.model, u), 1e-9);
 }
 
@@ -179,14 +187,9 @@ TEST(SolvePrescribed, CollapsedSideTakesPointValues) {
   mp.patches = {p};
   mp.materials = {{"steel", 1000.0, 0.3}};
   label_boundaries(mp, [](const Eigen::Vector3d&) { return std::string("T1"); });
-  const auto u = [](const Eigen::Vector3d& x) { return Eigen::Vector3d(kA * x + kC); };
-  iga_check::ElasticityProblem problem;
-  problem.prescribed = {{"T1", u}};
-  iga_check::ElasticityOptions options;
-  options.extra_quadrature = kExtra;
-  const auto sol = iga_check::solve_elasticity(mp, problem, options);
+  const auto sol = solve_with_t1_prescribed(mp, linear_field);
   EXPECT_GT(sol.report.unknowns, 0);
-  EXPECT_LT(coefficient_error(sol.model, u), 1e-9);
+  EXPECT_LT(coefficient_error(sol.model, linear_field), 1e-9);
 }
 
 TEST(SolvePrescribed, BadInput) {

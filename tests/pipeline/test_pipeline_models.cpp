@@ -125,14 +125,20 @@ void expect_certified(const json& summary, double min_scaled_jacobian) {
   EXPECT_GE(summary.at("min_scaled_jacobian").get<double>(), min_scaled_jacobian);
 }
 
+// Runs a model's case, checks what holds on every model and its layout's
+// rectangle and boundary-segment counts.
+ModelRun run_model_with_layout(const std::string& name, int surfaces, int rectangles, int segments) {
+  ModelRun r = run_model(name);
+  expect_model_facts(r, surfaces);
+  EXPECT_EQ(r.rectangles, rectangles);
+  EXPECT_EQ(r.segments, segments);
+  return r;
+}
+
 TEST(PipelineModels, Sphere2MeetsEveryCriterion) {
-  const ModelRun r = run_model("sphere2");
-  expect_model_facts(r, 2);
-  const json& s = r.report.at("summary");
+  const ModelRun r = run_model_with_layout("sphere2", 2, 1, 4);
   EXPECT_EQ(r.cli.exit_code, 0) << r.cli.out;
-  expect_certified(s, 0.2);
-  EXPECT_EQ(r.rectangles, 1);
-  EXPECT_EQ(r.segments, 4);
+  expect_certified(r.report.at("summary"), 0.2);
 }
 
 // ring2 meets every criterion but the minimum scaled Jacobian: every element
@@ -141,12 +147,8 @@ TEST(PipelineModels, Sphere2MeetsEveryCriterion) {
 // (docs/decomposition.md, "Known limits"); the bound keeps it from getting
 // worse unnoticed.
 TEST(PipelineModels, Ring2IsCertified) {
-  const ModelRun r = run_model("ring2");
-  expect_model_facts(r, 2);
-  const json& s = r.report.at("summary");
-  EXPECT_EQ(r.rectangles, 8);
-  EXPECT_EQ(r.segments, 16);
-  expect_certified(s, 0.1);
+  const ModelRun r = run_model_with_layout("ring2", 2, 8, 16);
+  expect_certified(r.report.at("summary"), 0.1);
 }
 
 // torus3 meets the topology, fidelity, volume, material and convergence
@@ -154,11 +156,8 @@ TEST(PipelineModels, Ring2IsCertified) {
 // the core's faces come out negative (21 of 36,288). The bound on their
 // share keeps that from getting worse unnoticed.
 TEST(PipelineModels, Torus3AllButTheCertificate) {
-  const ModelRun r = run_model("torus3");
-  expect_model_facts(r, 1);
+  const ModelRun r = run_model_with_layout("torus3", 1, 18, 32);
   const json& s = r.report.at("summary");
-  EXPECT_EQ(r.rectangles, 18);
-  EXPECT_EQ(r.segments, 32);
   EXPECT_LT(s.at("negative").get<double>(), 0.001 * s.at("elements").get<double>());
 }
 

@@ -844,28 +844,22 @@ TEST(BuildVolumeParam, OptionValidation) {
     return "no exception";
   };
   auto has = [](const std::string& s, const char* what) { return s.find(what) != std::string::npos; };
-  VolumeParamOptions o;
+  // The message for the default options with one of them changed.
+  auto with = [&](auto change) {
+    VolumeParamOptions o;
+    change(o);
+    return message(o, params);
+  };
+  const VolumeParamOptions o;
   EXPECT_TRUE(has(message(o, params), "w-field belongs to another mesh"));  // the options themselves pass
-  VolumeParamOptions s3 = o;
-  s3.strategy = 3;
-  EXPECT_TRUE(has(message(s3, params), "strategy"));
-  VolumeParamOptions s0 = o;
-  s0.strategy = 0;
-  EXPECT_TRUE(has(message(s0, params), "strategy"));
+  EXPECT_TRUE(has(with([](VolumeParamOptions& x) { x.strategy = 3; }), "strategy"));
+  EXPECT_TRUE(has(with([](VolumeParamOptions& x) { x.strategy = 0; }), "strategy"));
   EXPECT_TRUE(has(message(o, {0.0, 1.0}), "sample parameters"));
   EXPECT_TRUE(has(message(o, {0.1, 0.5, 1.0}), "sample parameters"));
   EXPECT_TRUE(has(message(o, {0.0, 0.5, 0.9}), "sample parameters"));
-  for (double w0 : {0.3, 0.5, 1.0, 1.2}) {
-    VolumeParamOptions b = o;
-    b.w0 = w0;
-    EXPECT_TRUE(has(message(b, params), "w0")) << w0;
-  }
-  VolumeParamOptions good_w0 = o;
-  good_w0.w0 = 0.8;
-  EXPECT_TRUE(has(message(good_w0, params), "w-field belongs to another mesh"));
-  VolumeParamOptions theta = o;
-  theta.theta = 0.0;
-  EXPECT_TRUE(has(message(theta, params), "theta"));
+  for (double w0 : {0.3, 0.5, 1.0, 1.2}) EXPECT_TRUE(has(with([w0](VolumeParamOptions& x) { x.w0 = w0; }), "w0")) << w0;
+  EXPECT_TRUE(has(with([](VolumeParamOptions& x) { x.w0 = 0.8; }), "w-field belongs to another mesh"));
+  EXPECT_TRUE(has(with([](VolumeParamOptions& x) { x.theta = 0.0; }), "theta"));
 }
 
 }  // namespace

@@ -23,7 +23,12 @@
 // material layer: layer k spans w in [(k - 1)/n, k/n] (the innermost one up
 // to the core), so layer faces lie on the Ti exactly. S+, S- and the corner
 // surfaces are the streamline surfaces from the core's outer edges: sampled
-// exactly, never a staircase of tets.
+// exactly, never a staircase of tets. The shells of the crest faces (and
+// strategy 1's fans) trace only the columns of their long edges (and the
+// fan's binormal row) and are linear across in between, their points on T1
+// and the Ti put back onto those surfaces: their own streamlines bunch up on
+// the ridge of w in M's plane. With strategy 2, M and the lids are smoothed
+// per rectangle first (surface_degree).
 #include <array>
 #include <vector>
 

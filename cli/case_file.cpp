@@ -300,7 +300,10 @@ CaseFile read_case_file(const std::string& path) {
   }
   if (const json* m = r.find("midsurface")) c.midsurface = parse_midsurface_options(*m, path);
   if (const json* d = r.find("decomposition")) c.volume = parse_decomposition_options(*d, path);
-  if (const json* f = r.find("fit")) c.fit = parse_fit_options(*f, path);
+  if (const json* f = r.find("fit")) {
+    c.fit = parse_fit_options(*f, path);
+    c.jacobian = parse_jacobian_options(*f, path);
+  }
   if (const json* e = r.find("export")) c.export_formats = read_export(*e, path);
   if (const json* v = r.find("validation")) c.validation = read_validation(*v, path);
   if (const json* l = r.find("load_case")) {

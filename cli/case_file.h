@@ -11,6 +11,7 @@
 #include "igaprep/param/midsurface_pipeline.h"
 #include "igaprep/param/volume_param.h"
 #include "igaprep/spline/block_fit.h"
+#include "igaprep/spline/optimize_jacobian.h"
 
 namespace igaprep::cli {
 
@@ -81,6 +82,7 @@ struct CaseFile {
   param::MidsurfaceOptions midsurface;  // section "midsurface" (docs/midsurface.md)
   param::VolumeParamOptions volume;     // section "decomposition" (docs/decomposition.md)
   spline::BlockFitOptions fit;          // section "fit"
+  spline::JacobianOptimizationOptions jacobian;  // section "fit", keys jacobian_*
   std::vector<std::string> export_formats;  // section "export": besides model.h5, in order
   CaseValidation validation;                // section "validation"
   std::optional<CaseLoadCase> load_case;    // section "load_case"

@@ -31,13 +31,24 @@ param::VolumeParamOptions parse_decomposition_options(const nlohmann::json& s, c
 
 spline::BlockFitOptions parse_fit_options(const nlohmann::json& s, const std::string& file) {
   if (!s.is_object()) case_fail(file, "'fit' must be an object");
-  refuse_unknown_keys(s, {"degree", "elements", "oversample"}, "fit", file);
+  refuse_unknown_keys(s, {"degree", "elements", "jacobian_points", "jacobian_sweeps", "jacobian_target", "oversample"},
+                     "fit", file);
   spline::BlockFitOptions o;
   for (const char* key : {"degree", "elements", "oversample"})
     if (s.contains(key) && !s[key].is_number_integer()) case_fail(file, std::string("'fit.") + key + "' must be an integer");
   o.degree = static_cast<int>(case_number(s, "degree", o.degree, 1, 5, "fit", file));
   o.elements = static_cast<int>(case_number(s, "elements", o.elements, 1, 32, "fit", file));
   o.oversample = static_cast<int>(case_number(s, "oversample", o.oversample, 1, 8, "fit", file));
+  return o;
+}
+
+spline::JacobianOptimizationOptions parse_jacobian_options(const nlohmann::json& s, const std::string& file) {
+  spline::JacobianOptimizationOptions o;
+  for (const char* key : {"jacobian_points", "jacobian_sweeps"})
+    if (s.contains(key) && !s[key].is_number_integer()) case_fail(file, std::string("'fit.") + key + "' must be an integer");
+  o.target = case_number(s, "jacobian_target", o.target, 0.0, 0.9, "fit", file);
+  o.sweeps = static_cast<int>(case_number(s, "jacobian_sweeps", o.sweeps, 0, 1000, "fit", file));
+  o.points = static_cast<int>(case_number(s, "jacobian_points", o.points, 2, 9, "fit", file));
   return o;
 }
 

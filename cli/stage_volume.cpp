@@ -9,8 +9,10 @@
 #include "igaprep/param/decomposition_mesh.h"
 #include "igaprep/param/inset_base.h"
 #include "igaprep/param/sliding_uv.h"
+#include "igaprep/param/surface_projector.h"
 #include "igaprep/param/w_field.h"
 #include "igaprep/spline/find_interfaces.h"
+#include "igaprep/spline/optimize_jacobian.h"
 #include "stage_timer.h"
 
 namespace igaprep::cli {
@@ -46,6 +48,28 @@ void write_blocks_mesh(const param::VolumeParam& vp, double diag, const std::str
               "non-positive, %d open faces, %d non-manifold faces; wrote %s/decomposition_blocks*.vtu\n",
               mc - 1, static_cast<long long>(bm.tets.T.rows()), bm.merged_points, bm.non_positive_tets, bm.open_faces,
               bm.nonmanifold_faces, dir.c_str());
+}
+
+// Moves the control points where the sampled scaled Jacobian is below the
+// case's target (optimize_jacobian.h): those on T1 and the Ti slide along
+// them, collapsed sides stay.
+void raise_jacobians(const CaseFile& c, const param::DecompositionMesh& H, const param::VolumeParam& vp,
+                     spline::MultiPatch& mp) {
+  StageTimer timer;
+  const std::vector<param::SurfaceProjector> surfaces = param::surface_projectors(H);
+  auto slide = [&](int surface, const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
+    return surfaces.at(static_cast<std::size_t>(surface)).slide(from, to);
+  };
+  std::vector<std::pair<int, int>> fixed;
+  for (std::size_t p = 0; p < vp.blocks.size(); ++p)
+    for (int s = 0; s < 6; ++s)
+      if (vp.blocks[p].collapsed[static_cast<std::size_t>(s)]) fixed.emplace_back(static_cast<int>(p), s + 1);
+  const spline::JacobianOptimizationResult r = spline::optimize_jacobians(mp, slide, fixed, c.jacobian);
+  std::printf("           Jacobians %.2f s: lowest sampled scaled Jacobian %.3f -> %.3f, points below %.2f: %d -> %d "
+              "(%d control points moved, at most %.2g, %d sweeps)\n",
+              timer.seconds(), r.min_before, r.min_after, c.jacobian.target, r.below_before, r.below_after,
+              r.moved_points, r.max_move, r.sweeps);
+  std::fflush(stdout);
 }
 
 }  // namespace
@@ -168,6 +192,7 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
               t_fit.seconds(), mp.patches.size(), fit_options.degree, fit_options.elements, mp.interfaces.size(),
               out.stitched, out.max_stitch, mp.boundaries.size(), out.unmatched_sides, n);
   std::fflush(stdout);
+  if (c.jacobian.target > 0.0) raise_jacobians(c, H, vp, mp);
   out.fit_seconds = t_fit.seconds();
   return out;
 }

@@ -3,15 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
 #include <string>
 #include <tuple>
-#include <unordered_map>
 #include <utility>
 
 #include <Eigen/Geometry>
 
 #include "igaprep/core/error.h"
+#include "igaprep/param/point_merger.h"
 
 namespace igaprep::param {
 
@@ -75,54 +74,6 @@ std::array<std::array<int, 4>, 6> cell_tets(const CellOrder& order) {
     }
   return out;
 }
-
-// Merges points closer than the tolerance through a hash grid of cells of
-// that size (a point's match is in its own or a neighbouring cell).
-class PointMerger {
- public:
-  explicit PointMerger(double tol) : tol_(tol) {}
-
-  // Returns the vertex index of p and whether it is a new vertex.
-  std::pair<int, bool> insert(const Eigen::Vector3d& p) {
-    std::array<std::int64_t, 3> key;
-    for (int d = 0; d < 3; ++d) {
-      const double s = std::floor(p[d] / tol_);
-      if (!(std::abs(s) < 1e17))
-        throw bad_input("blocks_tet_mesh: merge tolerance " + std::to_string(tol_) + " too small for the coordinate " +
-                        std::to_string(p[d]));
-      key[d] = static_cast<std::int64_t>(s);
-    }
-    int best = -1;
-    double best_dist = tol_;
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          const auto it = grid_.find(hash({{key[0] + dx, key[1] + dy, key[2] + dz}}));
-          if (it == grid_.end()) continue;
-          for (int v : it->second) {
-            const double dist = (points_[static_cast<std::size_t>(v)] - p).norm();
-            if (dist <= best_dist) best_dist = dist, best = v;
-          }
-        }
-    if (best >= 0) return {best, false};
-    const int v = static_cast<int>(points_.size());
-    points_.push_back(p);
-    grid_[hash(key)].push_back(v);  // hash collisions only cost a distance test
-    return {v, true};
-  }
-
-  const std::vector<Eigen::Vector3d>& points() const { return points_; }
-
- private:
-  static std::uint64_t hash(const std::array<std::int64_t, 3>& k) {
-    std::uint64_t h = 1469598103934665603ull;
-    for (std::int64_t x : k) h = (h ^ static_cast<std::uint64_t>(x)) * 1099511628211ull + (h >> 29);
-    return h;
-  }
-  double tol_;
-  std::vector<Eigen::Vector3d> points_;
-  std::unordered_map<std::uint64_t, std::vector<int>> grid_;
-};
 
 struct TetFace {
   std::array<int, 3> key;  // sorted vertex indices

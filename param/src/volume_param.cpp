@@ -44,6 +44,23 @@ double segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, cons
   return (p - (a + t * ab)).norm();
 }
 
+// The sample cells whose corner tet at (i, j, k) is not positive.
+int count_folded(const SampledBlock& b, int m) {
+  auto at = [&](int i, int j, int k) -> Eigen::Vector3d { return b.samples.row(i + m * (j + m * k)).transpose(); };
+  int folded = 0;
+  for (int k = 0; k + 1 < m; ++k)
+    for (int j = 0; j + 1 < m; ++j)
+      for (int i = 0; i + 1 < m; ++i) {
+        const Eigen::Vector3d o = at(i, j, k);
+        Eigen::Matrix3d E;
+        E.col(0) = at(i + 1, j, k) - o;
+        E.col(1) = at(i, j + 1, k) - o;
+        E.col(2) = at(i, j, k + 1) - o;
+        if (!(E.determinant() > 0.0)) ++folded;
+      }
+  return folded;
+}
+
 // Reverses the first direction when the grid's finite-difference Jacobian at
 // its centre is negative; counts the cells whose corner tets are not positive.
 void orient_block(SampledBlock& b, int m) {
@@ -63,16 +80,7 @@ void orient_block(SampledBlock& b, int m) {
     std::swap(b.side_label[0], b.side_label[1]);
     std::swap(b.collapsed[0], b.collapsed[1]);
   }
-  for (int k = 0; k + 1 < m; ++k)
-    for (int j = 0; j + 1 < m; ++j)
-      for (int i = 0; i + 1 < m; ++i) {
-        const Eigen::Vector3d o = at(i, j, k);
-        Eigen::Matrix3d E;
-        E.col(0) = at(i + 1, j, k) - o;
-        E.col(1) = at(i, j + 1, k) - o;
-        E.col(2) = at(i, j, k + 1) - o;
-        if (!(E.determinant() > 0.0)) ++b.folded;
-      }
+  b.folded = count_folded(b, m);
 }
 
 // Fills the rows j of a shell block (samples i + m j + m^2 k) that were not
@@ -335,13 +343,7 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
   out.core_faces = static_cast<int>(core_faces.size());
 
   // Shell: streamlines from every sample of every outer core face, cut at the layers' w-levels.
-  std::vector<SurfaceProjector> surface;  // T1..Tn
-  for (int k = 0; k < n; ++k) {
-    const std::vector<int>& rows = H.surface_faces[static_cast<std::size_t>(k)];
-    Eigen::MatrixXi F(static_cast<Eigen::Index>(rows.size()), 3);
-    for (std::size_t r = 0; r < rows.size(); ++r) F.row(static_cast<Eigen::Index>(r)) = H.tets.F.row(rows[r]);
-    surface.emplace_back(V, F);
-  }
+  const std::vector<SurfaceProjector> surface = surface_projectors(H);  // T1..Tn
   Progress progress("streamlines", core_faces.size());
   for (std::size_t f = 0; f < core_faces.size(); ++f) {
     const ShellBase& face = core_faces[f];

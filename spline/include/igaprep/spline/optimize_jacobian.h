@@ -1,0 +1,58 @@
+#pragma once
+// Raises the lowest scaled Jacobians of a fitted multipatch model by moving
+// its control points (after the fit, before the check).
+//
+// Where the decomposition's blocks meet T1 at narrow angles (docs/
+// decomposition.md, "Known limits") the fitted patches have scaled Jacobians
+// near 0.1 and below; the samples there cannot be fitted better. Here every
+// control point whose patches have a sampled scaled Jacobian below the target
+// in its support is moved, Gauss-Seidel, to raise the lowest one there: a
+// control point inside the model freely, one on T1 or a material interface
+// along that surface (through `slide`), so that the narrow corners of the
+// layout on those surfaces can open. A shared control point moves once for
+// all patches that hold it: interfaces stay conforming. A move is kept only
+// if the lowest scaled Jacobian in the point's support rises, so the model's
+// lowest one never falls.
+#include <functional>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "igaprep/spline/multipatch.h"
+
+namespace igaprep::spline {
+
+struct JacobianOptimizationOptions {
+  // Control points with a sampled scaled Jacobian below this in their support
+  // move (0: nothing moves). The check samples more densely (a 5-point grid
+  // and the Gauss points per element): 0.35 here gave 0.26 to 0.30 there.
+  double target = 0.35;
+  int sweeps = 40;  // at most this many sweeps over the control points (0: measure only)
+  int points = 5;   // sample points per element and direction, ends included (>= 2); 3 let folds through between them
+};
+
+struct JacobianOptimizationResult {
+  double min_before = 1.0, min_after = 1.0;  // lowest sampled scaled Jacobian
+  int below_before = 0, below_after = 0;     // sample points below the target
+  int moved_points = 0;                      // distinct control points that moved
+  long long moves = 0;
+  int sweeps = 0;                            // sweeps run
+  double max_move = 0.0;                     // largest distance a control point moved
+};
+
+// The position a control point on surface `surface` (a label index: 0 = T1)
+// may take when it would move from `from` to `to`.
+using SlideFn = std::function<Eigen::Vector3d(int surface, const Eigen::Vector3d& from, const Eigen::Vector3d& to)>;
+
+// Inputs: the model with its interfaces and labelled boundaries found
+// (find_interfaces; an interface's `surface` >= 0 puts its control points on
+// that surface, a boundary side on its label); `slide` for those; sides
+// (patch, side 1..6) whose control points must stay (collapsed sides).
+// Control points on two different surfaces stay. Sample points where a
+// column of the Jacobian vanishes (collapsed sides) are left out.
+JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& slide,
+                                              const std::vector<std::pair<int, int>>& fixed_sides,
+                                              const JacobianOptimizationOptions& options = {});
+
+}  // namespace igaprep::spline

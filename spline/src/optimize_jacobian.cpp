@@ -1,0 +1,343 @@
+#include "igaprep/spline/optimize_jacobian.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <Eigen/LU>
+
+#include "igaprep/core/error.h"
+#include "igaprep/spline/basis.h"
+#include "igaprep/spline/curve_surface.h"
+#include "igaprep/spline/knot_vector.h"
+#include "igaprep/spline/multipatch_topology.h"
+
+namespace igaprep::spline {
+
+namespace {
+
+constexpr int kFree = -1, kFixed = -2;
+
+// Scaled Jacobian (det over the product of the column lengths); +infinity
+// where a column (nearly) vanishes: a collapsed side, degenerate, not folded.
+double scaled(const Eigen::Matrix3d& J) {
+  const double a = J.col(0).norm(), b = J.col(1).norm(), c = J.col(2).norm();
+  const double hi = std::max({a, b, c});
+  if (!(std::min({a, b, c}) > 1e-9 * hi)) return std::numeric_limits<double>::infinity();
+  return J.determinant() / (a * b * c);
+}
+
+// One basis function's value and derivative at a sample point of one direction.
+struct Entry {
+  int point;
+  double N, dN;
+};
+
+// A patch's sample points (a tensor grid, `points` per element and direction)
+// with their Jacobians, and per direction and control index the sample
+// points in that function's support.
+struct PatchSamples {
+  std::array<int, 3> n{};                           // sample points per direction
+  std::array<std::vector<std::vector<Entry>>, 3> support;  // [direction][control index]
+  std::array<std::vector<int>, 3> first;            // [direction][point]: first control index non-zero there
+  std::array<int, 3> degree{};
+  std::vector<Eigen::Matrix3d> J;                   // per sample point, i fastest
+
+  int index(int i, int j, int k) const { return i + n[0] * (j + n[1] * k); }
+};
+
+PatchSamples sample_patch(const Patch& p, int points) {
+  PatchSamples s;
+  for (int d = 0; d < 3; ++d) {
+    const std::vector<double> brk = unique_knots(p.knots[static_cast<std::size_t>(d)]);
+    std::vector<double> params;
+    for (std::size_t e = 0; e + 1 < brk.size(); ++e)
+      for (int t = e == 0 ? 0 : 1; t < points; ++t)
+        params.push_back(brk[e] + (brk[e + 1] - brk[e]) * t / (points - 1));
+    const int deg = p.degrees[static_cast<std::size_t>(d)];
+    const BasisTable tab = basis_table(p.knots[static_cast<std::size_t>(d)], deg, params, 1);
+    s.n[static_cast<std::size_t>(d)] = tab.size();
+    s.degree[static_cast<std::size_t>(d)] = deg;
+    for (int i = 0; i < tab.size(); ++i) s.first[static_cast<std::size_t>(d)].push_back(tab.span[static_cast<std::size_t>(i)] - deg);
+    auto& sup = s.support[static_cast<std::size_t>(d)];
+    sup.assign(static_cast<std::size_t>(p.count(d)), {});
+    for (int i = 0; i < tab.size(); ++i)
+      for (int r = 0; r <= deg; ++r) {
+        const int a = tab.span[static_cast<std::size_t>(i)] - deg + r;
+        sup[static_cast<std::size_t>(a)].push_back({i, tab.at(i, 0)[r], tab.at(i, 1)[r]});
+      }
+  }
+  s.J.assign(static_cast<std::size_t>(s.n[0]) * s.n[1] * s.n[2], Eigen::Matrix3d::Zero());
+  for (int c = 0; c < p.count(2); ++c)
+    for (int b = 0; b < p.count(1); ++b)
+      for (int a = 0; a < p.count(0); ++a) {
+        const Eigen::Vector3d P = p.control_points.row(p.index(a, b, c)).transpose();
+        for (const Entry& ec : s.support[2][static_cast<std::size_t>(c)])
+          for (const Entry& eb : s.support[1][static_cast<std::size_t>(b)])
+            for (const Entry& ea : s.support[0][static_cast<std::size_t>(a)]) {
+              const Eigen::RowVector3d g(ea.dN * eb.N * ec.N, ea.N * eb.dN * ec.N, ea.N * eb.N * ec.dN);
+              s.J[static_cast<std::size_t>(s.index(ea.point, eb.point, ec.point))] += P * g;
+            }
+      }
+  return s;
+}
+
+struct Copy {
+  int patch, local, a, b, c;
+};
+
+class Optimizer {
+ public:
+  Optimizer(MultiPatch& mp, int points) : mp_(mp) {
+    for (const Patch& p : mp.patches) samples_.push_back(sample_patch(p, points));
+  }
+
+  // Calls f(J at the point after moving by delta) for every sample point in
+  // the support of the copies.
+  template <class F>
+  void for_support(const std::vector<Copy>& copies, const Eigen::Vector3d& delta, F&& f) {
+    for (const Copy& cp : copies) {
+      PatchSamples& s = samples_[static_cast<std::size_t>(cp.patch)];
+      for (const Entry& ec : s.support[2][static_cast<std::size_t>(cp.c)])
+        for (const Entry& eb : s.support[1][static_cast<std::size_t>(cp.b)])
+          for (const Entry& ea : s.support[0][static_cast<std::size_t>(cp.a)]) {
+            const Eigen::RowVector3d g(ea.dN * eb.N * ec.N, ea.N * eb.dN * ec.N, ea.N * eb.N * ec.dN);
+            Eigen::Matrix3d& J = s.J[static_cast<std::size_t>(s.index(ea.point, eb.point, ec.point))];
+            f(J, delta * g);
+          }
+    }
+  }
+
+  // Lowest and soft minimum of the scaled Jacobians in the copies' support
+  // after a move by delta.
+  void measure(const std::vector<Copy>& copies, const Eigen::Vector3d& delta, double* worst, double* soft) {
+    thread_local std::vector<double> q;
+    q.clear();
+    double lo = std::numeric_limits<double>::infinity();
+    for_support(copies, delta, [&](const Eigen::Matrix3d& J, const Eigen::Matrix3d& dJ) {
+      const double v = scaled(J + dJ);
+      if (std::isfinite(v)) {
+        q.push_back(v);
+        lo = std::min(lo, v);
+      }
+    });
+    *worst = lo;
+    if (!soft) return;
+    constexpr double beta = 40.0;
+    double sum = 0.0;
+    for (double v : q) sum += std::exp(-beta * (v - lo));
+    *soft = q.empty() ? lo : lo - std::log(sum) / beta;
+  }
+
+  // The sample points in the copies' support whose scaled Jacobian is below
+  // `relevance` (the others are checked once more before a move is kept).
+  struct Item {
+    const Eigen::Matrix3d* J;
+    Eigen::RowVector3d g;
+  };
+  void gather(const std::vector<Copy>& copies, double relevance, std::vector<Item>* items) {
+    items->clear();
+    for (const Copy& cp : copies) {
+      PatchSamples& s = samples_[static_cast<std::size_t>(cp.patch)];
+      for (const Entry& ec : s.support[2][static_cast<std::size_t>(cp.c)])
+        for (const Entry& eb : s.support[1][static_cast<std::size_t>(cp.b)])
+          for (const Entry& ea : s.support[0][static_cast<std::size_t>(cp.a)]) {
+            const Eigen::Matrix3d& J = s.J[static_cast<std::size_t>(s.index(ea.point, eb.point, ec.point))];
+            if (scaled(J) < relevance)
+              items->push_back({&J, Eigen::RowVector3d(ea.dN * eb.N * ec.N, ea.N * eb.dN * ec.N, ea.N * eb.N * ec.dN)});
+          }
+    }
+  }
+  static void measure(const std::vector<Item>& items, const Eigen::Vector3d& delta, double* worst, double* soft) {
+    double lo = std::numeric_limits<double>::infinity();
+    thread_local std::vector<double> q;
+    q.clear();
+    for (const Item& it : items) {
+      const double v = scaled(*it.J + delta * it.g);
+      if (std::isfinite(v)) {
+        q.push_back(v);
+        lo = std::min(lo, v);
+      }
+    }
+    *worst = lo;
+    if (!soft) return;
+    constexpr double beta = 40.0;
+    double sum = 0.0;
+    for (double v : q) sum += std::exp(-beta * (v - lo));
+    *soft = q.empty() ? lo : lo - std::log(sum) / beta;
+  }
+
+  void apply(const std::vector<Copy>& copies, const Eigen::Vector3d& delta) {
+    for_support(copies, delta, [](Eigen::Matrix3d& J, const Eigen::Matrix3d& dJ) { J += dJ; });
+    for (const Copy& cp : copies) mp_.patches[static_cast<std::size_t>(cp.patch)].control_points.row(cp.local) += delta.transpose();
+  }
+
+  // Calls f(patch, local control point) for every control point whose
+  // support holds a sample point below the target.
+  template <class F>
+  void below_target(double target, F&& f) const {
+    for (std::size_t pi = 0; pi < samples_.size(); ++pi) {
+      const PatchSamples& s = samples_[pi];
+      const Patch& p = mp_.patches[pi];
+      for (int k = 0; k < s.n[2]; ++k)
+        for (int j = 0; j < s.n[1]; ++j)
+          for (int i = 0; i < s.n[0]; ++i) {
+            if (!(scaled(s.J[static_cast<std::size_t>(s.index(i, j, k))]) < target)) continue;
+            const int a0 = s.first[0][static_cast<std::size_t>(i)], b0 = s.first[1][static_cast<std::size_t>(j)],
+                      c0 = s.first[2][static_cast<std::size_t>(k)];
+            for (int c = c0; c <= c0 + s.degree[2]; ++c)
+              for (int b = b0; b <= b0 + s.degree[1]; ++b)
+                for (int a = a0; a <= a0 + s.degree[0]; ++a) f(static_cast<int>(pi), p.index(a, b, c));
+          }
+    }
+  }
+
+  void global(double target, double* worst, int* below) const {
+    *worst = std::numeric_limits<double>::infinity();
+    *below = 0;
+    for (const PatchSamples& s : samples_)
+      for (const Eigen::Matrix3d& J : s.J) {
+        const double v = scaled(J);
+        if (!std::isfinite(v)) continue;
+        *worst = std::min(*worst, v);
+        if (v < target) ++*below;
+      }
+    if (!std::isfinite(*worst)) *worst = 1.0;
+  }
+
+ private:
+  MultiPatch& mp_;
+  std::vector<PatchSamples> samples_;
+};
+
+}  // namespace
+
+JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& slide,
+                                              const std::vector<std::pair<int, int>>& fixed_sides,
+                                              const JacobianOptimizationOptions& options) {
+  if (options.sweeps < 0 || options.points < 2 || !(options.target >= 0.0 && options.target <= 1.0))
+    throw bad_input("optimize_jacobians: need sweeps >= 0, points >= 2 and a target in [0, 1]");
+  for (const Patch& p : mp.patches)
+    if (p.rational()) throw bad_input("optimize_jacobians: rational patches are not supported");
+  const GlobalNumbering num = global_numbering(mp);
+  std::vector<std::vector<Copy>> copies(static_cast<std::size_t>(num.count));
+  for (std::size_t pi = 0; pi < mp.patches.size(); ++pi) {
+    const Patch& p = mp.patches[pi];
+    for (int c = 0; c < p.count(2); ++c)
+      for (int b = 0; b < p.count(1); ++b)
+        for (int a = 0; a < p.count(0); ++a) {
+          const int l = p.index(a, b, c);
+          copies[static_cast<std::size_t>(num.global[pi][static_cast<std::size_t>(l)])].push_back({static_cast<int>(pi), l, a, b, c});
+        }
+  }
+  // Constraints: labelled boundary sides and interfaces on a surface slide on it.
+  std::vector<int> cons(static_cast<std::size_t>(num.count), kFree);
+  auto mark = [&](int patch, int side, int surface) {
+    if (patch < 0 || static_cast<std::size_t>(patch) >= mp.patches.size() || side < 1 || side > 6)
+      throw bad_input("optimize_jacobians: bad side (patch " + std::to_string(patch) + ", side " + std::to_string(side) + ")");
+    for (int l : side_control_points(mp.patches[static_cast<std::size_t>(patch)], side)) {
+      int& c = cons[static_cast<std::size_t>(num.global[static_cast<std::size_t>(patch)][static_cast<std::size_t>(l)])];
+      if (surface == kFixed) c = kFixed;
+      else if (c == kFree) c = surface;
+      else if (c != surface) c = kFixed;
+    }
+  };
+  for (const BoundarySide& b : mp.boundaries) mark(b.patch, b.side, b.label);
+  for (const Interface& itf : mp.interfaces)
+    if (itf.surface >= 0) mark(itf.patch_a, itf.side_a, itf.surface), mark(itf.patch_b, itf.side_b, itf.surface);
+  for (const auto& [patch, side] : fixed_sides) mark(patch, side, kFixed);
+  if (!slide)
+    for (int& c : cons)
+      if (c >= 0) c = kFixed;
+
+  Optimizer opt(mp, options.points);
+  JacobianOptimizationResult out;
+  opt.global(options.target, &out.min_before, &out.below_before);
+  std::vector<Eigen::Vector3d> start(static_cast<std::size_t>(num.count));
+  for (int g = 0; g < num.count; ++g) {
+    const Copy& c0 = copies[static_cast<std::size_t>(g)].front();
+    start[static_cast<std::size_t>(g)] = mp.patches[static_cast<std::size_t>(c0.patch)].control_points.row(c0.local).transpose();
+  }
+  std::vector<char> moved(static_cast<std::size_t>(num.count), 0);
+  std::vector<Optimizer::Item> items;
+  for (int sweep = 0; sweep < options.sweeps; ++sweep) {
+    long long moves = 0;
+    std::vector<char> active(static_cast<std::size_t>(num.count), 0);
+    opt.below_target(options.target, [&](int patch, int local) {
+      active[static_cast<std::size_t>(num.global[static_cast<std::size_t>(patch)][static_cast<std::size_t>(local)])] = 1;
+    });
+    for (int g = 0; g < num.count; ++g) {
+      const int con = cons[static_cast<std::size_t>(g)];
+      if (con == kFixed || !active[static_cast<std::size_t>(g)]) continue;
+      const std::vector<Copy>& cp = copies[static_cast<std::size_t>(g)];
+      // Points far above the target cannot fall to the lowest one in a step
+      // of at most a quarter of the nearest neighbour's distance; they are
+      // checked once, before the move is kept.
+      const double relevance = std::min(1.0, options.target + 0.4);
+      opt.gather(cp, relevance, &items);
+      double worst, soft;
+      Optimizer::measure(items, Eigen::Vector3d::Zero(), &worst, &soft);
+      if (!(worst < options.target)) continue;
+      // Step length: the distance to the nearest neighbouring control point.
+      const Patch& p0 = mp.patches[static_cast<std::size_t>(cp.front().patch)];
+      const Eigen::Vector3d x = p0.control_points.row(cp.front().local).transpose();
+      double edge = std::numeric_limits<double>::infinity();
+      for (const Copy& c : cp) {
+        const Patch& p = mp.patches[static_cast<std::size_t>(c.patch)];
+        const std::array<int, 3> ijk{{c.a, c.b, c.c}};
+        for (int d = 0; d < 3; ++d)
+          for (int s : {-1, 1}) {
+            std::array<int, 3> q = ijk;
+            q[static_cast<std::size_t>(d)] += s;
+            if (q[static_cast<std::size_t>(d)] < 0 || q[static_cast<std::size_t>(d)] >= p.count(d)) continue;
+            const double l = (p.control_points.row(p.index(q[0], q[1], q[2])).transpose() - x).norm();
+            if (l > 0.0) edge = std::min(edge, l);
+          }
+      }
+      if (!std::isfinite(edge)) continue;
+      // Central differences of the soft minimum.
+      const double h = 1e-5 * edge;
+      Eigen::Vector3d grad;
+      for (int d = 0; d < 3; ++d) {
+        Eigen::Vector3d e = Eigen::Vector3d::Zero();
+        e[d] = h;
+        double w1, s1, w2, s2;
+        Optimizer::measure(items, e, &w1, &s1);
+        Optimizer::measure(items, -e, &w2, &s2);
+        grad[d] = (s1 - s2) / (2.0 * h);
+      }
+      if (!(grad.norm() > 0.0)) continue;
+      grad.normalize();
+      for (double a = 0.25; a > 0.002; a *= 0.5) {
+        Eigen::Vector3d y = x + a * edge * grad;
+        if (con >= 0) y = slide(con, x, y);
+        const Eigen::Vector3d delta = y - x;
+        double w1, all;
+        Optimizer::measure(items, delta, &w1, nullptr);
+        if (!(w1 > worst + 1e-9)) continue;
+        opt.measure(cp, delta, &all, nullptr);
+        if (all > worst + 1e-9) {
+          opt.apply(cp, delta);
+          moved[static_cast<std::size_t>(g)] = 1;
+          ++moves;
+          break;
+        }
+      }
+    }
+    out.moves += moves;
+    out.sweeps = sweep + 1;
+    if (moves == 0) break;
+  }
+  opt.global(options.target, &out.min_after, &out.below_after);
+  for (int g = 0; g < num.count; ++g) {
+    if (!moved[static_cast<std::size_t>(g)]) continue;
+    ++out.moved_points;
+    const Copy& c0 = copies[static_cast<std::size_t>(g)].front();
+    const Eigen::Vector3d now = mp.patches[static_cast<std::size_t>(c0.patch)].control_points.row(c0.local).transpose();
+    out.max_move = std::max(out.max_move, (now - start[static_cast<std::size_t>(g)]).norm());
+  }
+  return out;
+}
+
+}  // namespace igaprep::spline

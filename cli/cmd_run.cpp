@@ -59,6 +59,11 @@ iga_check::PipelineSection pipeline_section(const CaseFile& c, const std::string
   add("unmatched_sides", volume.unmatched_sides);
   add("stitched_control_points", volume.stitched);
   add("max_stitch", volume.max_stitch);
+  if (c.jacobian.target > 0.0) {  // optimize_jacobians: its own samples' lowest scaled Jacobian before and after
+    add("fit_min_scaled_jacobian", volume.jacobians.min_before);
+    add("optimized_min_scaled_jacobian", volume.jacobians.min_after);
+    add("optimized_control_points", volume.jacobians.moved_points);
+  }
   add("positive_elements", static_cast<double>(check.positive));
   add("negative_elements", static_cast<double>(check.negative));
   add("degenerate_elements", static_cast<double>(check.degenerate));

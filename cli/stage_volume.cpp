@@ -53,8 +53,8 @@ void write_blocks_mesh(const param::VolumeParam& vp, double diag, const std::str
 // Moves the control points where the sampled scaled Jacobian is below the
 // case's target (optimize_jacobian.h): those on T1 and the Ti slide along
 // them, collapsed sides stay.
-void raise_jacobians(const CaseFile& c, const param::DecompositionMesh& H, const param::VolumeParam& vp,
-                     spline::MultiPatch& mp) {
+spline::JacobianOptimizationResult raise_jacobians(const CaseFile& c, const param::DecompositionMesh& H,
+                                                   const param::VolumeParam& vp, spline::MultiPatch& mp) {
   StageTimer timer;
   const std::vector<param::SurfaceProjector> surfaces = param::surface_projectors(H);
   auto slide = [&](int surface, const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
@@ -70,6 +70,7 @@ void raise_jacobians(const CaseFile& c, const param::DecompositionMesh& H, const
               timer.seconds(), r.min_before, r.min_after, c.jacobian.target, r.below_before, r.below_after,
               r.moved_points, r.max_move, r.sweeps);
   std::fflush(stdout);
+  return r;
 }
 
 }  // namespace
@@ -192,7 +193,7 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
               t_fit.seconds(), mp.patches.size(), fit_options.degree, fit_options.elements, mp.interfaces.size(),
               out.stitched, out.max_stitch, mp.boundaries.size(), out.unmatched_sides, n);
   std::fflush(stdout);
-  if (c.jacobian.target > 0.0) raise_jacobians(c, H, vp, mp);
+  if (c.jacobian.target > 0.0) out.jacobians = raise_jacobians(c, H, vp, mp);
   out.fit_seconds = t_fit.seconds();
   return out;
 }

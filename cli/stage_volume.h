@@ -10,6 +10,7 @@
 #include "igaprep/param/volume_param.h"
 #include "igaprep/spline/block_fit.h"
 #include "igaprep/spline/multipatch.h"
+#include "igaprep/spline/optimize_jacobian.h"
 
 namespace igaprep::cli {
 
@@ -18,6 +19,7 @@ struct VolumeStageResult {
   int stitched = 0;          // side control points made identical by stitching
   double max_stitch = 0.0;   // the largest such move
   int unmatched_sides = 0;   // sides neither on an interface nor labelled (0 for a valid model)
+  spline::JacobianOptimizationResult jacobians;  // what optimize_jacobians did (all zero when off)
   double decompose_seconds = 0.0, param_seconds = 0.0, fit_seconds = 0.0;
 };
 

@@ -157,6 +157,9 @@ TEST(CaseCli, DecompositionAndFitKeysAreChecked) {
       {R"("fit": {"elements": 0})", "fit.elements"},
       {R"("fit": {"degree": 2.5})", "fit.degree"},
       {R"("fit": {"knots": 3})", "fit.knots"},
+      {R"("fit": {"jacobian_target": 0.95})", "fit.jacobian_target"},
+      {R"("fit": {"jacobian_sweeps": 2.5})", "fit.jacobian_sweeps"},
+      {R"("fit": {"jacobian_points": 1})", "fit.jacobian_points"},
   };
   for (const auto& [section, key] : bad) {
     const auto dir = scratch_dir("volume_keys");

@@ -145,16 +145,28 @@ TEST(PipelineModels, Sphere2MeetsEveryCriterion) {
 // (fit.jacobian_target 0) ring2's smallest scaled Jacobian was 0.14 and
 // torus3 had 21 negative elements, at corners of the core's faces
 // (docs/decomposition.md).
+// What optimize_jacobians reported: the fitted model's lowest sampled
+// scaled Jacobian was below `fitted_below`, and after it none is below the
+// target (0.35), with some control points moved.
+void expect_jacobians_raised(const ModelRun& r, double fitted_below) {
+  const json& fig = r.report.at("pipeline").at("figures");
+  EXPECT_LT(fig.at("fit_min_scaled_jacobian").get<double>(), fitted_below);
+  EXPECT_GE(fig.at("optimized_min_scaled_jacobian").get<double>(), 0.35 - 1e-9);
+  EXPECT_GT(fig.at("optimized_control_points").get<int>(), 0);
+}
+
 TEST(PipelineModels, Ring2MeetsEveryCriterion) {
   const ModelRun r = run_model_with_layout("ring2", 2, 8, 16);
   EXPECT_EQ(r.cli.exit_code, 0) << r.cli.out;
   expect_certified(r.report.at("summary"), 0.2);
+  expect_jacobians_raised(r, 0.2);
 }
 
 TEST(PipelineModels, Torus3MeetsEveryCriterion) {
   const ModelRun r = run_model_with_layout("torus3", 1, 18, 32);
   EXPECT_EQ(r.cli.exit_code, 0) << r.cli.out;
   expect_certified(r.report.at("summary"), 0.2);
+  expect_jacobians_raised(r, 0.0);
 }
 
 // Strategy 1 (no core, the crest volumes are fans collapsed onto M's

@@ -1,0 +1,216 @@
+// Jacobian optimization (optimize_jacobian.h): raising the lowest scaled
+// Jacobian of distorted cubes, sliding on a labelled surface, shared faces
+// that stay conforming, fixed sides, and bad input.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+
+#include "igaprep/core/error.h"
+#include "igaprep/spline/curve_surface.h"
+#include "igaprep/spline/evaluate.h"
+#include "igaprep/spline/find_interfaces.h"
+#include "igaprep/spline/knot_vector.h"
+#include "igaprep/spline/multipatch_topology.h"
+#include "igaprep/spline/optimize_jacobian.h"
+
+namespace {
+
+using namespace igaprep::spline;
+
+// Degree-3 patch with 3 elements per direction filling [x0, x1] x [0, 1]^2,
+// control points at the Greville abscissae (the map is affine).
+Patch box(double x0 = 0.0, double x1 = 1.0) {
+  Patch P;
+  P.degrees = {{3, 3, 3}};
+  for (auto& k : P.knots) k = uniform_knot_vector(3, 6);
+  const std::vector<double> g = greville_abscissae(P.knots[0], 3);
+  P.control_points.resize(216, 3);
+  for (int k = 0; k < 6; ++k)
+    for (int j = 0; j < 6; ++j)
+      for (int i = 0; i < 6; ++i) P.control_points.row(P.index(i, j, k)) << x0 + (x1 - x0) * g[i], g[j], g[k];
+  return P;
+}
+
+MultiPatch model(std::vector<Patch> patches) {
+  MultiPatch mp;
+  mp.patches = std::move(patches);
+  mp.labels = {"T1", "other"};
+  mp.materials.resize(1);
+  return mp;
+}
+
+// Lowest scaled Jacobian of a patch on a grid of 9 points per element and direction.
+double dense_min(const Patch& P) {
+  std::vector<double> t;
+  const std::vector<double> brk = unique_knots(P.knots[0]);
+  for (std::size_t e = 0; e + 1 < brk.size(); ++e)
+    for (int s = e == 0 ? 0 : 1; s <= 8; ++s) t.push_back(brk[e] + (brk[e + 1] - brk[e]) * s / 8.0);
+  double lo = std::numeric_limits<double>::infinity();
+  for (double w : t)
+    for (double v : t)
+      for (double u : t) {
+        const Eigen::Matrix3d J = evaluate_jacobian(P, Eigen::Vector3d(u, v, w));
+        lo = std::min(lo, J.determinant() / (J.col(0).norm() * J.col(1).norm() * J.col(2).norm()));
+      }
+  return lo;
+}
+
+// Whether the control points of `side` are bitwise those of `before`.
+bool side_unchanged(const Patch& before, const Patch& after, int side) {
+  for (int l : side_control_points(before, side))
+    if (!(before.control_points.row(l).array() == after.control_points.row(l).array()).all()) return false;
+  return true;
+}
+
+// Records all six sides of patch `p` as boundaries with `label`.
+void label_sides(MultiPatch& mp, int p, int label) {
+  for (int side = 1; side <= 6; ++side) mp.boundaries.push_back({p, side, label});
+}
+
+// The cube with interior control point (2, 2, 1) pulled towards the bottom face.
+Patch skewed_cube() {
+  Patch P = box();
+  P.control_points.row(P.index(2, 2, 1)) += 0.27 * Eigen::RowVector3d(1, 1, -1);
+  return P;
+}
+
+// The cube with control point (1, 1, 0) of side w0 pushed along the face.
+Patch skewed_bottom(double d = 0.42) {
+  Patch P = box();
+  P.control_points.row(P.index(1, 1, 0)) += d * Eigen::RowVector3d(1, 1, 0);
+  return P;
+}
+
+// An interior control point moves until the sampled minimum reaches the target; labelled sides stay.
+TEST(OptimizeJacobian, RaisesSkewedInterior) {
+  MultiPatch mp = model({skewed_cube()});
+  label_sides(mp, 0, 0);
+  const Patch before = mp.patches[0];
+  const double dense_before = dense_min(before);
+  const JacobianOptimizationResult r = optimize_jacobians(mp, nullptr, {});
+  const double dense_after = dense_min(mp.patches[0]);
+  EXPECT_LT(dense_before, 0.2);
+  EXPECT_LT(r.min_before, 0.2);
+  EXPECT_GE(r.min_after, 0.35 - 1e-9);
+  EXPECT_GT(dense_after, 0.2);
+  EXPECT_GT(dense_after, dense_before);
+  EXPECT_GT(r.moved_points, 0);
+  EXPECT_GT(r.max_move, 0.0);
+  for (int side = 1; side <= 6; ++side) EXPECT_TRUE(side_unchanged(before, mp.patches[0], side)) << "side " << side;
+}
+
+// A control point of the labelled side w0 slides in its plane; the other labelled sides stay.
+TEST(OptimizeJacobian, SlidesOnLabelledSide) {
+  MultiPatch mp = model({skewed_bottom()});
+  for (int side = 1; side <= 6; ++side) mp.boundaries.push_back({0, side, side == kW0 ? 0 : 1});
+  const Patch before = mp.patches[0];
+  const SlideFn slide = [](int surface, const Eigen::Vector3d& from, const Eigen::Vector3d& to) -> Eigen::Vector3d {
+    return surface == 0 ? Eigen::Vector3d(to.x(), to.y(), from.z()) : from;
+  };
+  const JacobianOptimizationResult r = optimize_jacobians(mp, slide, {});
+  EXPECT_LT(r.min_before, 0.2);
+  EXPECT_GE(r.min_after, 0.35 - 1e-9);
+  const Patch& after = mp.patches[0];
+  const std::vector<int> bottom = side_control_points(before, kW0);
+  int slid = 0;
+  for (int l : bottom) {
+    EXPECT_EQ(after.control_points(l, 2), before.control_points(l, 2)) << "point " << l;
+    if (after.control_points(l, 0) != before.control_points(l, 0) || after.control_points(l, 1) != before.control_points(l, 1))
+      ++slid;
+  }
+  EXPECT_GT(slid, 0);
+  for (int side = 1; side <= 6; ++side)
+    if (side != kW0) EXPECT_TRUE(side_unchanged(before, after, side)) << "side " << side;
+}
+
+// A distorted shared face moves as one: the interface stays conforming (outer sides labelled, fixed).
+TEST(OptimizeJacobian, SharedFaceStaysConforming) {
+  MultiPatch mp = model({box(0.0, 0.5), box(0.5, 1.0)});
+  const Eigen::RowVector3d D = 0.17 * Eigen::RowVector3d(0, 1, -1);
+  mp.patches[0].control_points.row(mp.patches[0].index(5, 1, 1)) += D;
+  mp.patches[1].control_points.row(mp.patches[1].index(0, 1, 1)) += D;
+  find_interfaces(mp, 1e-9);
+  ASSERT_EQ(mp.interfaces.size(), 1u);
+  for (int side = 1; side <= 6; ++side) {
+    if (side != kU1) mp.boundaries.push_back({0, side, 0});
+    if (side != kU0) mp.boundaries.push_back({1, side, 0});
+  }
+  const MultiPatch before = mp;
+  const JacobianOptimizationResult r = optimize_jacobians(mp, nullptr, {});
+  EXPECT_LT(r.min_before, 0.2);
+  EXPECT_GE(r.min_after, 0.35 - 1e-9);
+  const ConformityReport report = check_conformity(mp, 1e-12);
+  EXPECT_TRUE(report.conforming) << (report.problems.empty() ? "" : report.problems[0]);
+  const std::vector<int> a = side_control_points(mp.patches[0], kU1), b = side_control_points(mp.patches[1], kU0);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i)
+    EXPECT_TRUE((mp.patches[0].control_points.row(a[i]).array() == mp.patches[1].control_points.row(b[i]).array()).all()) << i;
+  EXPECT_FALSE(side_unchanged(before.patches[0], mp.patches[0], kU1));  // the face itself moved
+}
+
+// An undistorted cube is left exactly as it is.
+TEST(OptimizeJacobian, IdentityCubeUnchanged) {
+  MultiPatch mp = model({box()});
+  const JacobianOptimizationResult r = optimize_jacobians(mp, nullptr, {});
+  EXPECT_EQ(r.moves, 0);
+  EXPECT_EQ(r.moved_points, 0);
+  EXPECT_EQ(r.max_move, 0.0);
+  EXPECT_EQ(r.min_before, r.min_after);
+  EXPECT_NEAR(r.min_before, 1.0, 1e-12);
+  EXPECT_TRUE((mp.patches[0].control_points.array() == box().control_points.array()).all());
+}
+
+// A side passed in fixed_sides stays bit for bit (no boundaries recorded: only fixed_sides holds it).
+TEST(OptimizeJacobian, FixedSideStays) {
+  MultiPatch mp = model({skewed_bottom()});
+  const Patch before = mp.patches[0];
+  const JacobianOptimizationResult r = optimize_jacobians(mp, nullptr, {{0, kW0}});
+  EXPECT_TRUE(side_unchanged(before, mp.patches[0], kW0));
+  EXPECT_GE(r.min_after, r.min_before);
+  EXPECT_GT(r.moved_points, 0);  // other points did move
+}
+
+// Where the target is out of reach (a fold held by fixed sides) the lowest value still does not fall.
+TEST(OptimizeJacobian, MinimumNeverFalls) {
+  MultiPatch mp = model({skewed_bottom(0.5)});  // folded next to side w0
+  label_sides(mp, 0, 0);
+  const JacobianOptimizationResult r = optimize_jacobians(mp, nullptr, {});
+  EXPECT_LT(r.min_before, 0.0);
+  EXPECT_LT(r.min_after, 0.35);
+  EXPECT_GE(r.min_after, r.min_before);
+  EXPECT_GT(r.moved_points, 0);  // interior points did move
+}
+
+// Bad options, rational patches and bad sides are bad input.
+TEST(OptimizeJacobian, BadInputThrows) {
+  auto bad_input = [](MultiPatch mp, const std::vector<std::pair<int, int>>& fixed, JacobianOptimizationOptions o) {
+    try {
+      optimize_jacobians(mp, nullptr, fixed, o);
+    } catch (const igaprep::Error& e) {
+      return e.kind() == igaprep::ErrorKind::BadInput;
+    }
+    return false;
+  };
+  const MultiPatch mp = model({box()});
+  JacobianOptimizationOptions points, sweeps, target;
+  points.points = 1;
+  sweeps.sweeps = -1;
+  target.target = 1.5;
+  EXPECT_TRUE(bad_input(mp, {}, points));
+  EXPECT_TRUE(bad_input(mp, {}, sweeps));
+  EXPECT_TRUE(bad_input(mp, {}, target));
+  EXPECT_TRUE(bad_input(mp, {{0, 7}}, {}));
+  EXPECT_TRUE(bad_input(mp, {{1, 1}}, {}));  // no patch 1
+  MultiPatch rational = mp;
+  rational.patches[0].weights = Eigen::VectorXd::Ones(216);
+  EXPECT_TRUE(bad_input(rational, {}, {}));
+  EXPECT_FALSE(bad_input(mp, {{0, 6}}, {}));  // the same call with good input passes
+}
+
+}  // namespace

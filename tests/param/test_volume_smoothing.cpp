@@ -538,6 +538,27 @@ TEST(SurfaceProjector, FlatSquareProjectsAlongTheNormal) {
   }
 }
 
+// slide keeps a point's signed distance from the surface: 0.1 above the flat
+// square, moved anywhere over it, it lands 0.1 above the point below `to`.
+TEST(SurfaceProjector, SlideKeepsTheOffset) {
+  Eigen::MatrixXd V;
+  Eigen::MatrixXi F;
+  flat_square(4, V, F);
+  const SurfaceProjector proj(V, F);
+  int tri = -1;
+  proj.closest({0.3, 0.3, 1.0}, &tri);
+  EXPECT_NEAR(std::abs(proj.normal(tri).z()), 1.0, 1e-12);
+  for (int k = 0; k < 50; ++k) {
+    const Eigen::Vector3d from(0.5 + 0.5 * hash_unit(40 * k), 0.5 + 0.5 * hash_unit(40 * k + 1), 0.1);
+    const Eigen::Vector3d to(0.5 + 0.5 * hash_unit(40 * k + 2), 0.5 + 0.5 * hash_unit(40 * k + 3),
+                             0.25 * hash_unit(40 * k + 4));
+    const Eigen::Vector3d y = proj.slide(from, to);
+    EXPECT_NEAR(y.x(), to.x(), 1e-12);
+    EXPECT_NEAR(y.y(), to.y(), 1e-12);
+    EXPECT_NEAR(y.z(), 0.1, 1e-12);
+  }
+}
+
 TEST(SurfaceProjector, IcosphereMatchesBruteForce) {
   Eigen::MatrixXd V;
   Eigen::MatrixXi F;

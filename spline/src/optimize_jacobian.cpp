@@ -278,16 +278,8 @@ class Optimizer {
   std::vector<Item> items_;
 };
 
-}  // namespace
-
-JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& slide,
-                                              const std::vector<std::pair<int, int>>& fixed_sides,
-                                              const JacobianOptimizationOptions& options) {
-  if (options.sweeps < 0 || options.points < 2 || !(options.target >= 0.0 && options.target <= 1.0))
-    throw bad_input("optimize_jacobians: need sweeps >= 0, points >= 2 and a target in [0, 1]");
-  for (const Patch& p : mp.patches)
-    if (p.rational()) throw bad_input("optimize_jacobians: rational patches are not supported");
-  const GlobalNumbering num = global_numbering(mp);
+// Per global control point, its copies in the patches that hold it.
+std::vector<std::vector<Copy>> control_point_copies(const MultiPatch& mp, const GlobalNumbering& num) {
   std::vector<std::vector<Copy>> copies(static_cast<std::size_t>(num.count));
   for (std::size_t pi = 0; pi < mp.patches.size(); ++pi) {
     const Patch& p = mp.patches[pi];
@@ -298,7 +290,14 @@ JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& sli
           copies[static_cast<std::size_t>(num.global[pi][static_cast<std::size_t>(l)])].push_back({static_cast<int>(pi), l, a, b, c});
         }
   }
-  // Constraints: labelled boundary sides and interfaces on a surface slide on it.
+  return copies;
+}
+
+// Per global control point: kFree, the surface it slides on (labelled
+// boundary sides, interfaces on a surface), or kFixed (fixed sides, two
+// surfaces, or a surface without a slide function).
+std::vector<int> constraints(const MultiPatch& mp, const GlobalNumbering& num,
+                             const std::vector<std::pair<int, int>>& fixed_sides, bool can_slide) {
   std::vector<int> cons(static_cast<std::size_t>(num.count), kFree);
   auto mark = [&](int patch, int side, int surface) {
     if (patch < 0 || static_cast<std::size_t>(patch) >= mp.patches.size() || side < 1 || side > 6)
@@ -314,9 +313,24 @@ JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& sli
   for (const Interface& itf : mp.interfaces)
     if (itf.surface >= 0) mark(itf.patch_a, itf.side_a, itf.surface), mark(itf.patch_b, itf.side_b, itf.surface);
   for (const auto& [patch, side] : fixed_sides) mark(patch, side, kFixed);
-  if (!slide)
+  if (!can_slide)
     for (int& c : cons)
       if (c >= 0) c = kFixed;
+  return cons;
+}
+
+}  // namespace
+
+JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& slide,
+                                              const std::vector<std::pair<int, int>>& fixed_sides,
+                                              const JacobianOptimizationOptions& options) {
+  if (options.sweeps < 0 || options.points < 2 || !(options.target >= 0.0 && options.target <= 1.0))
+    throw bad_input("optimize_jacobians: need sweeps >= 0, points >= 2 and a target in [0, 1]");
+  for (const Patch& p : mp.patches)
+    if (p.rational()) throw bad_input("optimize_jacobians: rational patches are not supported");
+  const GlobalNumbering num = global_numbering(mp);
+  const std::vector<std::vector<Copy>> copies = control_point_copies(mp, num);
+  const std::vector<int> cons = constraints(mp, num, fixed_sides, static_cast<bool>(slide));
 
   Optimizer opt(mp, options.points);
   JacobianOptimizationResult out;

@@ -66,9 +66,9 @@ spline::JacobianOptimizationResult raise_jacobians(const CaseFile& c, const para
       if (vp.blocks[p].collapsed[static_cast<std::size_t>(s)]) fixed.emplace_back(static_cast<int>(p), s + 1);
   const spline::JacobianOptimizationResult r = spline::optimize_jacobians(mp, slide, fixed, c.jacobian);
   std::printf("           Jacobians %.2f s: lowest sampled scaled Jacobian %.3f -> %.3f, points below %.2f: %d -> %d "
-              "(%d control points moved, at most %.2g, %d sweeps)\n",
+              "(%d control points moved, at most %.2g, %d sweeps, %d patches on dense samples)\n",
               timer.seconds(), r.min_before, r.min_after, c.jacobian.target, r.below_before, r.below_after,
-              r.moved_points, r.max_move, r.sweeps);
+              r.moved_points, r.max_move, r.sweeps, r.dense_patches);
   std::fflush(stdout);
   return r;
 }

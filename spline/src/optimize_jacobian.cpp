@@ -10,6 +10,7 @@
 #include "igaprep/core/error.h"
 #include "igaprep/spline/basis.h"
 #include "igaprep/spline/curve_surface.h"
+#include "igaprep/spline/evaluate.h"
 #include "igaprep/spline/knot_vector.h"
 #include "igaprep/spline/multipatch_topology.h"
 
@@ -48,16 +49,34 @@ struct PatchSamples {
   int index(int i, int j, int k) const { return i + n[0] * (j + n[1] * k); }
 };
 
+// Sample parameters of one direction: `points` per element, ends included,
+// each element boundary once.
+std::vector<double> sample_params(const std::vector<double>& knots, int points) {
+  const std::vector<double> brk = unique_knots(knots);
+  std::vector<double> params;
+  for (std::size_t e = 0; e + 1 < brk.size(); ++e)
+    for (int t = e == 0 ? 0 : 1; t < points; ++t) params.push_back(brk[e] + (brk[e + 1] - brk[e]) * t / (points - 1));
+  return params;
+}
+
+// Scaled Jacobians of a patch on a tensor grid (evaluate_grid: sum
+// factorisation), i fastest.
+std::vector<Eigen::Matrix3d> grid_jacobians(const Patch& p, const std::array<std::vector<double>, 3>& params) {
+  const GridEvaluation ev = evaluate_grid(p, params, 1);
+  std::vector<Eigen::Matrix3d> J(static_cast<std::size_t>(ev.jacobians.rows()));
+  for (Eigen::Index at = 0; at < ev.jacobians.rows(); ++at)
+    for (int c = 0; c < 3; ++c)
+      for (int d = 0; d < 3; ++d) J[static_cast<std::size_t>(at)](c, d) = ev.jacobians(at, 3 * c + d);
+  return J;
+}
+
 PatchSamples sample_patch(const Patch& p, int points) {
   PatchSamples s;
+  std::array<std::vector<double>, 3> params;
   for (int d = 0; d < 3; ++d) {
-    const std::vector<double> brk = unique_knots(p.knots[static_cast<std::size_t>(d)]);
-    std::vector<double> params;
-    for (std::size_t e = 0; e + 1 < brk.size(); ++e)
-      for (int t = e == 0 ? 0 : 1; t < points; ++t)
-        params.push_back(brk[e] + (brk[e + 1] - brk[e]) * t / (points - 1));
+    params[static_cast<std::size_t>(d)] = sample_params(p.knots[static_cast<std::size_t>(d)], points);
     const int deg = p.degrees[static_cast<std::size_t>(d)];
-    const BasisTable tab = basis_table(p.knots[static_cast<std::size_t>(d)], deg, params, 1);
+    const BasisTable tab = basis_table(p.knots[static_cast<std::size_t>(d)], deg, params[static_cast<std::size_t>(d)], 1);
     s.n[static_cast<std::size_t>(d)] = tab.size();
     s.degree[static_cast<std::size_t>(d)] = deg;
     for (int i = 0; i < tab.size(); ++i) s.first[static_cast<std::size_t>(d)].push_back(tab.span[static_cast<std::size_t>(i)] - deg);
@@ -69,21 +88,19 @@ PatchSamples sample_patch(const Patch& p, int points) {
         sup[static_cast<std::size_t>(a)].push_back({i, tab.at(i, 0)[r], tab.at(i, 1)[r]});
       }
   }
-  s.J.assign(static_cast<std::size_t>(s.n[0]) * s.n[1] * s.n[2], Eigen::Matrix3d::Zero());
-  for (int c = 0; c < p.count(2); ++c)
-    for (int b = 0; b < p.count(1); ++b)
-      for (int a = 0; a < p.count(0); ++a) {
-        const Eigen::Vector3d P = p.control_points.row(p.index(a, b, c)).transpose();
-        for (const Entry& ec : s.support[2][static_cast<std::size_t>(c)])
-          for (const Entry& eb : s.support[1][static_cast<std::size_t>(b)])
-            for (const Entry& ea : s.support[0][static_cast<std::size_t>(a)]) {
-              const Eigen::RowVector3d g(ea.dN * eb.N * ec.N, ea.N * eb.dN * ec.N, ea.N * eb.N * ec.dN);
-              s.J[static_cast<std::size_t>(s.index(ea.point, eb.point, ec.point))] += P * g;
-            }
-      }
+  s.J = grid_jacobians(p, params);
   s.q.resize(s.J.size());
   for (std::size_t i = 0; i < s.J.size(); ++i) s.q[i] = scaled(s.J[i]);
   return s;
+}
+
+// The lowest scaled Jacobian of a patch sampled with `points` per element and direction.
+double patch_min_at(const Patch& p, int points) {
+  std::array<std::vector<double>, 3> params;
+  for (int d = 0; d < 3; ++d) params[static_cast<std::size_t>(d)] = sample_params(p.knots[static_cast<std::size_t>(d)], points);
+  double lo = std::numeric_limits<double>::infinity();
+  for (const Eigen::Matrix3d& J : grid_jacobians(p, params)) lo = std::min(lo, scaled(J));
+  return lo;
 }
 
 struct Copy {
@@ -92,9 +109,11 @@ struct Copy {
 
 class Optimizer {
  public:
-  Optimizer(MultiPatch& mp, int points) : mp_(mp) {
-    for (const Patch& p : mp.patches) samples_.push_back(sample_patch(p, points));
+  // points[patch]: sample points per element and direction of that patch.
+  Optimizer(MultiPatch& mp, const std::vector<int>& points) : mp_(mp) {
+    for (std::size_t pi = 0; pi < mp.patches.size(); ++pi) samples_.push_back(sample_patch(mp.patches[pi], points[pi]));
   }
+
 
   // Calls f(J at the point after moving by delta) for every sample point in
   // the support of the copies.
@@ -332,34 +351,60 @@ JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& sli
   const std::vector<std::vector<Copy>> copies = control_point_copies(mp, num);
   const std::vector<int> cons = constraints(mp, num, fixed_sides, static_cast<bool>(slide));
 
-  Optimizer opt(mp, options.points);
   JacobianOptimizationResult out;
-  opt.global(options.target, &out.min_before, &out.below_before);
   std::vector<Eigen::Vector3d> start(static_cast<std::size_t>(num.count));
   for (int g = 0; g < num.count; ++g) {
     const Copy& c0 = copies[static_cast<std::size_t>(g)].front();
     start[static_cast<std::size_t>(g)] = mp.patches[static_cast<std::size_t>(c0.patch)].control_points.row(c0.local).transpose();
   }
   std::vector<char> moved(static_cast<std::size_t>(num.count), 0);
-  for (int sweep = 0; sweep < options.sweeps; ++sweep) {
-    long long moves = 0;
-    std::vector<char> active(static_cast<std::size_t>(num.count), 0);
-    opt.below_target(options.target, [&](int patch, int local) {
-      active[static_cast<std::size_t>(num.global[static_cast<std::size_t>(patch)][static_cast<std::size_t>(local)])] = 1;
-    });
-    for (int g = 0; g < num.count; ++g) {
-      const int con = cons[static_cast<std::size_t>(g)];
-      if (con == kFixed || !active[static_cast<std::size_t>(g)]) continue;
-      if (opt.improve(copies[static_cast<std::size_t>(g)], con, slide, options.target)) {
-        moved[static_cast<std::size_t>(g)] = 1;
-        ++moves;
+  // Sweeps until no control point moves (or options.sweeps).
+  auto sweeps = [&](Optimizer& opt) {
+    for (int sweep = 0; sweep < options.sweeps; ++sweep) {
+      long long moves = 0;
+      std::vector<char> active(static_cast<std::size_t>(num.count), 0);
+      opt.below_target(options.target, [&](int patch, int local) {
+        active[static_cast<std::size_t>(num.global[static_cast<std::size_t>(patch)][static_cast<std::size_t>(local)])] = 1;
+      });
+      for (int g = 0; g < num.count; ++g) {
+        const int con = cons[static_cast<std::size_t>(g)];
+        if (con == kFixed || !active[static_cast<std::size_t>(g)]) continue;
+        if (opt.improve(copies[static_cast<std::size_t>(g)], con, slide, options.target)) {
+          moved[static_cast<std::size_t>(g)] = 1;
+          ++moves;
+        }
       }
+      out.moves += moves;
+      ++out.sweeps;
+      if (moves == 0) break;
     }
-    out.moves += moves;
-    out.sweeps = sweep + 1;
-    if (moves == 0) break;
+  };
+  std::vector<int> points(mp.patches.size(), options.points);
+  Optimizer coarse(mp, points);
+  coarse.global(options.target, &out.min_before, &out.below_before);
+  sweeps(coarse);
+  // A fold can open between the sample points where control points moved:
+  // those patches are sampled twice as densely, and where that finds a point
+  // well below the target they are optimized again on the dense samples.
+  std::vector<char> touched(mp.patches.size(), 0);
+  for (int g = 0; g < num.count; ++g)
+    if (moved[static_cast<std::size_t>(g)])
+      for (const Copy& c : copies[static_cast<std::size_t>(g)]) touched[static_cast<std::size_t>(c.patch)] = 1;
+  const int dense = 2 * options.points - 1;
+  bool any_dense = false;
+  for (std::size_t pi = 0; pi < mp.patches.size(); ++pi)
+    if (touched[pi] && patch_min_at(mp.patches[pi], dense) < options.target - 0.1) {
+      points[pi] = dense;
+      any_dense = true;
+      ++out.dense_patches;
+    }
+  if (any_dense) {
+    Optimizer fine(mp, points);
+    sweeps(fine);
+    fine.global(options.target, &out.min_after, &out.below_after);
+  } else {
+    coarse.global(options.target, &out.min_after, &out.below_after);
   }
-  opt.global(options.target, &out.min_after, &out.below_after);
   for (int g = 0; g < num.count; ++g) {
     if (!moved[static_cast<std::size_t>(g)]) continue;
     ++out.moved_points;

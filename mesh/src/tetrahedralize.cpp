@@ -8,6 +8,7 @@
 #include <tetgen.h>
 
 #include <CGAL/Polygon_mesh_processing/intersection.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -109,6 +110,23 @@ TetMesh tetrahedralize(const std::vector<TriMesh>& surfaces, const std::vector<T
         throw bad_input("tetrahedralize: " + surface_name(static_cast<int>(i)) + " and " +
                         surface_name(static_cast<int>(j)) + " intersect or touch; surfaces must be strictly nested");
       }
+
+  // Nor does an embedded surface that crosses itself (the input surfaces were
+  // checked when they were read; an embedded one, such as the base surface M,
+  // is made by the pipeline). TetGen would only say "a segment and a subface
+  // intersect", or crash.
+  for (std::size_t k = static_cast<std::size_t>(n); k < all.size(); ++k) {
+    std::vector<std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>> pairs;
+    CGAL::Polygon_mesh_processing::self_intersections(meshes[k], std::back_inserter(pairs));
+    if (pairs.empty()) continue;
+    const TriMesh& m = *all[k];
+    const Eigen::Index f = static_cast<Eigen::Index>(pairs.front().first.idx());
+    const Eigen::RowVector3d c = (m.V.row(m.F(f, 0)) + m.V.row(m.F(f, 1)) + m.V.row(m.F(f, 2))) / 3.0;
+    char where[96];
+    std::snprintf(where, sizeof where, "(%.6g, %.6g, %.6g)", c(0), c(1), c(2));
+    throw bad_input("tetrahedralize: " + surface_name(static_cast<int>(k)) + " intersects itself: " +
+                    std::to_string(pairs.size()) + " pairs of triangles, the first near " + where);
+  }
 
   tetgenio in;
   in.firstnumber = 0;

@@ -144,7 +144,11 @@ DecompositionMesh decomposition_mesh(const std::vector<mesh::TriMesh>& surfaces,
   if (M.F.rows() == 0) throw bad_input("decomposition_mesh: the base surface M has no triangles");
   DecompositionMesh H;
   H.num_surfaces = static_cast<int>(surfaces.size());
-  H.tets = mesh::tetrahedralize(surfaces, {M}, options);
+  try {
+    H.tets = mesh::tetrahedralize(surfaces, {M}, options);
+  } catch (const Error& e) {  // say which surface "embedded surface 0" is
+    throw Error(e.kind(), std::string("H (T1..Tn with the base surface M as embedded surface 0): ") + e.what());
+  }
   // tetrahedralize keeps the input points first, surface after surface.
   H.surface_vertex_offset.push_back(0);
   for (const auto& s : surfaces) H.surface_vertex_offset.push_back(H.surface_vertex_offset.back() + int(s.V.rows()));

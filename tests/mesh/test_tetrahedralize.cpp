@@ -227,6 +227,32 @@ TEST(Tetrahedralize, TetgenFailureIsAnErrorNotACrash) {
   }
 }
 
+// An embedded surface that crosses itself (a disc whose outer ring of
+// vertices is folded back over its inside) is refused before TetGen, with
+// where it crosses; TetGen alone would only say that a segment and a subface
+// intersect.
+TEST(Tetrahedralize, SelfIntersectingEmbeddedSurfaceIsRefused) {
+  const std::vector<TriMesh> shells{igaprep::models::make_ellipsoid(1, 1, 1, 2)};
+  TriMesh d = disc(0.5, 0.0, 4, 16);
+  // The outermost vertices go to the opposite side of the centre, at
+  // alternating heights just above and below the disc.
+  Eigen::Index far = 0;
+  d.V.rowwise().norm().maxCoeff(&far);
+  const double r = d.V.row(far).norm();
+  for (Eigen::Index i = 0; i < d.V.rows(); ++i)
+    if (d.V.row(i).norm() > 0.99 * r) d.V.row(i) *= -0.3, d.V(i, 2) = 0.05 * ((i % 2) ? 1.0 : -1.0);
+  try {
+    igaprep::mesh::tetrahedralize(shells, {d});
+    FAIL() << "a self-intersecting embedded surface was accepted";
+  } catch (const igaprep::Error& e) {
+    EXPECT_EQ(e.kind(), igaprep::ErrorKind::BadInput) << e.what();
+    EXPECT_NE(std::string(e.what()).find("embedded surface 0 intersects itself"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("near ("), std::string::npos) << e.what();
+  }
+  // The same disc unfolded is accepted.
+  EXPECT_NO_THROW(igaprep::mesh::tetrahedralize(shells, {disc(0.5, 0.0, 4, 16)}));
+}
+
 TEST(Tetrahedralize, PelvisWithCorticalShell) {
   const std::string path = std::string(IGAPREP_SHARED_MODELS_DIR) + "/pelvis_hip.stl";
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared model " << path << " is absent";

@@ -89,6 +89,7 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
   if (c.volume.sliding_uv) sliding = param::sliding_uv(mid.m0trim.mesh, pc);
   if (sliding.valid) pc.uv = sliding.uv;
   const param::InsetBase base = param::inset_base_surface(mid.m0trim.mesh, pc, c.volume.inset, c.volume.smoothing);
+
   if (keep_intermediate) {
     fs::create_directories(dir);
     mesh::VtuMesh v = mesh::vtu_triangles(base.mesh);
@@ -111,6 +112,9 @@ VolumeStageResult run_volume_stages(const CaseFile& c, const CaseSurfaces& surfa
               "M: %zu rectangles, %zu boundary segments\n",
               t_decomp.seconds(), uv_note, static_cast<long long>(H.tets.V.rows()), static_cast<long long>(H.tets.T.rows()),
               w.extrema.size(), layout.rectangles.size(), layout.crests.size());
+  if (base.smoothing < c.volume.smoothing)
+    std::printf("           M smoothed %d rounds, not %d (decomposition.smoothing): more made it intersect itself\n",
+                base.smoothing, c.volume.smoothing);
   std::fflush(stdout);
   if (keep_intermediate) {
     fs::create_directories(dir);

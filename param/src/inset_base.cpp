@@ -11,6 +11,10 @@
 
 #include <Eigen/Geometry>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+
 #include "igaprep/core/error.h"
 #include "igaprep/param/base_layout.h"
 #include "igaprep/param/sheet_topology.h"
@@ -188,6 +192,18 @@ std::array<bool, 2> on_domain_lines(const RectilinearDomain& D, const Eigen::Vec
 
 }  // namespace
 
+bool sheet_self_intersects(const mesh::TriMesh& sheet) {
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+  SurfaceMesh sm;
+  for (Eigen::Index v = 0; v < sheet.V.rows(); ++v) sm.add_vertex(Kernel::Point_3(sheet.V(v, 0), sheet.V(v, 1), sheet.V(v, 2)));
+  for (Eigen::Index f = 0; f < sheet.F.rows(); ++f)
+    if (sm.add_face(SurfaceMesh::Vertex_index(sheet.F(f, 0)), SurfaceMesh::Vertex_index(sheet.F(f, 1)),
+                    SurfaceMesh::Vertex_index(sheet.F(f, 2))) == SurfaceMesh::null_face())
+      return false;  // not an oriented 2-manifold: analyze_sheet reports that
+  return CGAL::Polygon_mesh_processing::does_self_intersect(sm);
+}
+
 InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double m0, int smoothing) {
   if (!(m0 > 0.0 && m0 < 1.0)) throw bad_input("inset base surface: m0 = " + std::to_string(m0) + " is outside (0, 1)");
   const RectilinearDomain& D = polycube.domain;
@@ -275,8 +291,16 @@ InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polyc
     const auto on = on_domain_lines(out.domain, uv.row(v).transpose());
     corner[static_cast<std::size_t>(v)] = on[0] && on[1];
   }
-  out.mesh = {V, F};
-  smooth_sheet(out.mesh, corner, smoothing);
+  // Smoothing moves vertices along their normals; where M0trim folds sharply
+  // that can make M cross itself (the genus-3 torus of ../shared/models at 5
+  // rounds), which H cannot embed: then fewer rounds, down to none.
+  const mesh::TriMesh unsmoothed{V, F};
+  for (int rounds = smoothing;; rounds /= 2) {
+    out.mesh = unsmoothed;
+    smooth_sheet(out.mesh, corner, rounds);
+    out.smoothing = rounds;
+    if (rounds == 0 || !sheet_self_intersects(out.mesh)) break;
+  }
   const SheetTopology topo = analyze_sheet(F, V.rows());
   const std::string problem =
       describe_sheet_problem(topo, static_cast<int>(D.holes.size()) + 1, "the inset base surface (d = " + std::to_string(d) + ")");

@@ -257,6 +257,22 @@ TEST(SmoothSheet, FlattensBumpsKeepsFixedAndPlanar) {
   EXPECT_LT(drift, 0.1 * moved_z);  // moves are (nearly) normal to the nearly flat sheet
 }
 
+// A planar grid does not intersect itself, nor does it with a bump; with one
+// interior vertex dragged across the sheet in its plane (its triangles then
+// overlap others) it does.
+TEST(SheetSelfIntersects, PlanarGridAndFoldedGrids) {
+  const mesh::TriMesh flat = param_test::square_tris(6);
+  EXPECT_FALSE(sheet_self_intersects(flat));
+  const Eigen::Index centre = 3 + 7 * 3;
+  ASSERT_EQ(flat.V.row(centre), Eigen::RowVector3d(0.5, 0.5, 0.0));
+  mesh::TriMesh dragged = flat;
+  dragged.V.row(centre) << 0.9, 0.1, 0.0;
+  EXPECT_TRUE(sheet_self_intersects(dragged));
+  mesh::TriMesh lifted = flat;
+  lifted.V.row(centre) << 0.5, 0.5, 0.3;  // a bump: still no crossing
+  EXPECT_FALSE(sheet_self_intersects(lifted));
+}
+
 // ---------------------------------------------------------------- narrowest_band, inset_base_surface
 
 TEST(NarrowestBand, WidthHeightAndGaps) {
@@ -288,6 +304,7 @@ void check_inset(const InsetCase& k) {
 
   const InsetBase base = inset_base_surface(sheet, pc, k.m0, 20);
   EXPECT_DOUBLE_EQ(base.inset, d);
+  EXPECT_EQ(base.smoothing, 20);  // all rounds: M does not intersect itself
   ASSERT_EQ(base.uv.rows(), base.mesh.V.rows());
   ASSERT_GT(base.uv.rows(), 0);
   // Each cut line is shifted from its nominal place by at most 0.2 mean

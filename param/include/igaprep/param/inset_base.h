@@ -21,7 +21,13 @@ struct InsetBase {
   RectilinearDomain domain;    // about [0, W - 2d] x [0, H - 2d] with the grown holes: each cut line is
                                // moved by up to 0.2 mean (u, v) edges, away from the sheet's vertices
   double inset = 0.0;          // the nominal d, in (u, v) units (= 3D arc length along the domain's sides)
+  int smoothing = 0;           // smoothing rounds used: fewer than asked where more made M intersect itself
 };
+
+// Whether a triangle sheet crosses itself (CGAL, exact predicates; triangles
+// that share a vertex or an edge only do not count). False when the sheet is
+// not an oriented 2-manifold (CGAL cannot hold it; the sheet checks say so).
+bool sheet_self_intersects(const mesh::TriMesh& sheet);
 
 // Inputs: a sheet and its (u, v), a value c, the axis (0: u, 1: v). Splits
 // every triangle that the line uv(axis) = c crosses (orientation kept; new
@@ -43,7 +49,8 @@ int collapse_short_edges(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, const std::v
 // decomposition.inset): d = m0 x half the
 // narrowest band of the domain (its width, its height, and the gaps between
 // holes and between a hole and the outside); rounds of Taubin smoothing of
-// the 3D positions along the normals (the domain's corners fixed). Output: the inset sheet.
+// the 3D positions along the normals (the domain's corners fixed; halved
+// until M does not intersect itself, InsetBase::smoothing). Output: the inset sheet.
 // Throws check_failed when the result is not one sheet with one boundary
 // loop per domain boundary.
 InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double m0, int smoothing = 20);

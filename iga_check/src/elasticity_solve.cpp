@@ -60,26 +60,26 @@ std::vector<spline::BoundarySide> sides_with_label(const spline::MultiPatch& mp,
   return out;
 }
 
-struct Gauss {
-  Eigen::VectorXd p, w;
-};
-const Gauss& gauss(int n) {
-  static std::map<int, Gauss> cache;
-  auto it = cache.find(n);
-  if (it != cache.end()) return it->second;
-  Gauss g;
-  gauss_legendre(n, g.p, g.w);
-  return cache.emplace(n, g).first->second;
-}
+using PatchTables = std::array<std::vector<detail::DirElement>, 3>;
 
-// 1-D element tables of a patch, built once per direction (tensor structure).
-std::array<std::vector<detail::DirElement>, 3> patch_tables(const spline::Patch& p, int extra) {
-  std::array<std::vector<detail::DirElement>, 3> t;
-  for (int d = 0; d < 3; ++d) {
-    const Gauss& g = gauss(p.degrees[d] + 1 + extra);
-    t[d] = detail::direction_elements(p.knots[d], p.degrees[d], g.p, g.w);
-  }
-  return t;
+// 1-D element tables of every patch and direction (tensor structure), with
+// the Gauss rules they need computed once here: the tables belong to one
+// solve, so concurrent solves share no mutable state.
+std::vector<PatchTables> quadrature_tables(const spline::MultiPatch& mp, int extra) {
+  struct GaussRule {
+    Eigen::VectorXd points, weights;
+  };
+  std::map<int, GaussRule> rules;  // by number of points
+  std::vector<PatchTables> tables(mp.patches.size());
+  for (size_t p = 0; p < mp.patches.size(); ++p)
+    for (int d = 0; d < 3; ++d) {
+      const spline::Patch& pa = mp.patches[p];
+      const int n = pa.degrees[d] + 1 + extra;
+      auto [it, added] = rules.try_emplace(n);
+      if (added) gauss_legendre(n, it->second.points, it->second.weights);
+      tables[p][d] = detail::direction_elements(pa.knots[d], pa.degrees[d], it->second.points, it->second.weights);
+    }
+  return tables;
 }
 
 void check_jacobian(const detail::ElementValues& ev, int patch, double& sign) {
@@ -294,7 +294,7 @@ void scatter(Pattern& P, const std::vector<int>& gid, const Eigen::MatrixXd& Ke)
 // where the side collapses (zero area) are skipped. end_element() follows the
 // points of each element of the side.
 template <class F, class E>
-void for_side_points(const spline::Patch& pa, int side, const std::array<std::vector<detail::DirElement>, 3>& tables,
+void for_side_points(const spline::Patch& pa, int side, const PatchTables& tables,
                      F&& f, E&& end_element) {
   const int d = spline::side_direction(side);
   const bool at_max = spline::side_is_max(side);
@@ -333,7 +333,7 @@ void for_side_points(const spline::Patch& pa, int side, const std::array<std::ve
 // value. Outputs: prescribed[g] (0/1) and values (ncp x 3, rows of
 // non-prescribed points zero).
 void project_prescribed(const spline::MultiPatch& mp, const spline::GlobalNumbering& num,
-                        const std::vector<std::array<std::vector<detail::DirElement>, 3>>& tables,
+                        const std::vector<PatchTables>& tables,
                         const std::vector<PrescribedSide>& prescribed, std::vector<unsigned char>& is_prescribed,
                         Eigen::MatrixXd& values) {
   const int ncp = num.count;
@@ -498,8 +498,7 @@ ElasticitySolution solve_elasticity(const spline::MultiPatch& input, const Elast
     for (size_t l = 0; l < num.global[p].size(); ++l) X.row(num.global[p][l]) = mp.patches[p].control_points.row(l);
 
   // 1-D element tables per patch and direction (volume and side quadrature).
-  std::vector<std::array<std::vector<detail::DirElement>, 3>> tables(np);
-  for (int p = 0; p < np; ++p) tables[p] = patch_tables(mp.patches[p], options.extra_quadrature);
+  const std::vector<PatchTables> tables = quadrature_tables(mp, options.extra_quadrature);
 
   // Constraints: the side's control points carry its trace (open knot vectors).
   // Prescribed values first; a FixedSide component then sets its value to zero.

@@ -90,10 +90,22 @@ void check_jacobian(const detail::ElementValues& ev, int patch, double& sign) {
       std::ostringstream s;
       s << "patch " << patch << ": the Jacobian determinant vanishes or changes sign near x = ("
         << ev.x(q, 0) << ", " << ev.x(q, 1) << ", " << ev.x(q, 2)
-        << "); the model is not valid for analysis (see igaprep check)";
+        << "); the model is not valid for analysis (certify_model finds such elements)";
       throw bad_input(s.str());
     }
   }
+}
+
+// The labels of the boundary sides of the given patches, quoted ("none" if none).
+std::string boundary_labels_of(const spline::MultiPatch& mp, const std::vector<int>& patches) {
+  std::vector<int> labels;
+  for (const auto& b : mp.boundaries)
+    if (std::binary_search(patches.begin(), patches.end(), b.patch)) labels.push_back(b.label);
+  std::sort(labels.begin(), labels.end());
+  labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
+  std::string s;
+  for (int l : labels) s += (s.empty() ? "'" : ", '") + mp.labels[l] + "'";
+  return s.empty() ? "none" : s;
 }
 
 // Six rigid-body modes against the fixed coefficients, per connected part of
@@ -151,12 +163,19 @@ void check_rigid_modes(const spline::MultiPatch& mp, const spline::GlobalNumberi
     std::string motion;
     for (int k = 0; k < 6; ++k)
       if (std::abs(v(k)) > 0.3) motion += (motion.empty() ? "" : " + ") + std::string(names[k]);
+    std::ostringstream part;
+    part << "the part of the model made of patch" << (patches.size() > 1 ? "es" : "");
+    for (size_t i = 0; i < patches.size() && i < 10; ++i) part << (i ? ", " : " ") << patches[i];
+    if (patches.size() > 10) part << ", ...";
+    const std::string labels = boundary_labels_of(mp, patches);
     std::ostringstream s;
-    s << "the constraints leave " << free_modes << " rigid-body motion" << (free_modes > 1 ? "s" : "")
-      << " free (e.g. " << motion << ") in the part of the model made of patch" << (patches.size() > 1 ? "es" : "");
-    for (size_t i = 0; i < patches.size() && i < 10; ++i) s << (i ? ", " : " ") << patches[i];
-    if (patches.size() > 10) s << ", ...";
-    s << "; the stiffness matrix is singular: fix more components (--fix LABEL[:xyz])";
+    if (free_modes == 6)
+      s << "no boundary of " << part.str() << " is fixed or prescribed: its 6 rigid-body motions are free and the "
+        << "stiffness matrix is singular; fix at least one of its labelled boundaries (" << labels << ")";
+    else
+      s << "the constraints leave " << free_modes << " rigid-body motion" << (free_modes > 1 ? "s" : "") << " free (e.g. "
+        << motion << ") in " << part.str() << "; the stiffness matrix is singular: fix more displacement components "
+        << "on the labelled boundaries of that part (" << labels << ")";
     throw bad_input(s.str());
   }
 }
@@ -472,18 +491,18 @@ ElasticitySolution solve_elasticity(const spline::MultiPatch& input, const Elast
     if (input.patches[p].material < 0 || input.patches[p].material >= static_cast<int>(lame.size()))
       throw bad_input("patch " + std::to_string(p) + ": material index " + std::to_string(input.patches[p].material) +
                       " has no entry in the model's materials");
-  for (const auto& f : problem.fixed) sides_with_label(input, f.label, "--fix");
+  for (const auto& f : problem.fixed) sides_with_label(input, f.label, "fixed boundary");
   for (const auto& pr : problem.prescribed) {
     sides_with_label(input, pr.label, "prescribed displacement");
     if (!pr.displacement) throw bad_input("prescribed displacement on '" + pr.label + "': no function given");
   }
-  for (const auto& t : problem.tractions) sides_with_label(input, t.label, "--traction");
-  for (const auto& t : problem.pressures) sides_with_label(input, t.label, "--pressure");
+  for (const auto& t : problem.tractions) sides_with_label(input, t.label, "traction load");
+  for (const auto& t : problem.pressures) sides_with_label(input, t.label, "pressure load");
   if (!problem.body_force.allFinite()) throw bad_input("the body force is not finite");
   for (const auto& t : problem.tractions)
-    if (!t.traction.allFinite()) throw bad_input("--traction " + t.label + ": not finite");
+    if (!t.traction.allFinite()) throw bad_input("traction on '" + t.label + "': not finite");
   for (const auto& t : problem.pressures)
-    if (!std::isfinite(t.pressure)) throw bad_input("--pressure " + t.label + ": not finite");
+    if (!std::isfinite(t.pressure)) throw bad_input("pressure on '" + t.label + "': not finite");
 
   ElasticitySolution sol;
   ElasticityReport& rep = sol.report;
@@ -520,8 +539,8 @@ ElasticitySolution solve_elasticity(const spline::MultiPatch& input, const Elast
   std::vector<unsigned char> zero_fixed(3 * static_cast<size_t>(ncp), 0);
   for (const auto& f : problem.fixed) {
     if (!f.components[0] && !f.components[1] && !f.components[2])
-      throw bad_input("--fix " + f.label + ": no component chosen");
-    for (const auto& b : sides_with_label(mp, f.label, "--fix"))
+      throw bad_input("fixed boundary '" + f.label + "': no displacement component chosen");
+    for (const auto& b : sides_with_label(mp, f.label, "fixed boundary"))
       for (int l : spline::side_control_points(mp.patches[b.patch], b.side))
         for (int i = 0; i < 3; ++i)
           if (f.components[i]) {
@@ -645,9 +664,9 @@ ElasticitySolution solve_elasticity(const spline::MultiPatch& input, const Elast
                     [] {});
   };
   for (const auto& tl : problem.tractions)
-    for (const auto& b : sides_with_label(mp, tl.label, "--traction")) add_surface_load(b, tl.traction, 0.0);
+    for (const auto& b : sides_with_label(mp, tl.label, "traction load")) add_surface_load(b, tl.traction, 0.0);
   for (const auto& pl : problem.pressures)
-    for (const auto& b : sides_with_label(mp, pl.label, "--pressure"))
+    for (const auto& b : sides_with_label(mp, pl.label, "pressure load"))
       add_surface_load(b, Eigen::Vector3d::Zero(), pl.pressure);
   F -= Kfd_ud;
   rep.assembly_seconds = seconds_since(t_assembly);
@@ -688,7 +707,7 @@ ElasticitySolution solve_elasticity(const spline::MultiPatch& input, const Elast
     if (cg.info() != Eigen::Success || !u.allFinite()) {
       std::ostringstream s;
       s << "conjugate gradients did not converge in " << cg.iterations() << " iterations (residual " << cg.error()
-        << "); try --solver cholesky";
+        << "); the direct solver (LinearSolver::Cholesky) does not depend on convergence";
       throw internal_error(s.str());
     }
   }

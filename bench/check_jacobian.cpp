@@ -70,7 +70,7 @@ spline::MultiPatch hundred_patches() {
   for (int a = 0; a < 10; ++a)
     for (int b = 0; b < 10; ++b) {
       mp.patches.push_back(spline::refine_uniformly(twisted_patch(3, Eigen::Vector3d(1.5 * a, 1.5 * b, 0)), 2));
-      for (int s = 1; s <= 6; ++s) mp.boundaries.push_back({a * 10 + b, s, 0});
+      for (const spline::Side s : spline::Side::all()) mp.boundaries.push_back({a * 10 + b, s, 0});
     }
   mp.labels = {"outer"};
   mp.materials.push_back({"m", 1.0, 0.3});

@@ -76,10 +76,10 @@ void write_geometry(const spline::Patch& p, int id, std::ostream& out) {
 
 void write_interface(const spline::Interface& f, std::ostream& out) {
   std::array<int, 3> dirmap = f.dirmap, orient = f.orient;
-  const int na = spline::side_direction(f.side_a);
-  dirmap[na] = spline::side_direction(f.side_b);
-  orient[na] = spline::side_is_max(f.side_a) == spline::side_is_max(f.side_b) ? 1 : 0;
-  out << f.patch_a << " " << f.side_a << " " << f.patch_b << " " << f.side_b << " " << dirmap[0] << " "
+  const int na = f.side_a.direction();
+  dirmap[na] = f.side_b.direction();
+  orient[na] = f.side_a.parameter() == f.side_b.parameter() ? 1 : 0;
+  out << f.patch_a << " " << f.side_a.index() << " " << f.patch_b << " " << f.side_b.index() << " " << dirmap[0] << " "
       << dirmap[1] << " " << dirmap[2] << " " << orient[0] << " " << orient[1] << " " << orient[2] << "\n";
 }
 }  // namespace
@@ -113,7 +113,7 @@ void write_gismo_xml(const spline::MultiPatch& model, std::ostream& out) {
   for (const spline::BoundarySide& b : model.boundaries) by_label[b.label].push_back(&b);
   for (const auto& [label, list] : by_label) {
     out << "  <boundary name=\"" << xml_escape(model.labels[label]) << "\">\n";
-    for (const spline::BoundarySide* b : list) out << b->patch << " " << b->side << "\n";
+    for (const spline::BoundarySide* b : list) out << b->patch << " " << b->side.index() << "\n";
     out << "  </boundary>\n";
   }
   out << " </MultiPatch>\n</xml>\n";

@@ -31,9 +31,9 @@ int edge_direction(int e) { return e < 8 ? (e & 1) : 2; }
 // Corner (bits u, v, w) of MFEM's hexahedron vertex.
 constexpr int kCorner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
                                {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-// MFEM's outward face cycles, indexed by G+Smo side 1..6 (u0 u1 v0 v1 w0 w1).
-constexpr int kFaceVerts[7][4] = {{0, 0, 0, 0},  {3, 0, 4, 7}, {1, 2, 6, 5}, {0, 1, 5, 4},
-                                  {2, 3, 7, 6},  {3, 2, 1, 0}, {4, 5, 6, 7}};
+// MFEM's outward face cycles, by Side::array_index() (u0 u1 v0 v1 w0 w1).
+constexpr int kFaceVerts[6][4] = {{3, 0, 4, 7}, {1, 2, 6, 5}, {0, 1, 5, 4},
+                                  {2, 3, 7, 6}, {3, 2, 1, 0}, {4, 5, 6, 7}};
 
 // Union-find with parity: parity[x] = orientation of x relative to its parent.
 struct ParityUnionFind {
@@ -191,7 +191,7 @@ void write_mfem_mesh(const spline::MultiPatch& model, std::ostream& out) {
   for (size_t e = 0; e < t.edges.size(); ++e) kv_edge[{t.edges[e][0], t.edges[e][1]}] = static_cast<int>(e);
   for (const spline::BoundarySide& b : model.boundaries) {
     int q[4];
-    for (int k = 0; k < 4; ++k) q[k] = t.hex[b.patch][kFaceVerts[b.side][k]];
+    for (int k = 0; k < 4; ++k) q[k] = t.hex[b.patch][kFaceVerts[b.side.array_index()][k]];
     int start = -1;
     for (int r = 0; r < 4 && start < 0; ++r)
       if (kv_edge.count({q[r], q[(r + 1) % 4]}) && kv_edge.count({q[(r + 1) % 4], q[(r + 2) % 4]})) start = r;

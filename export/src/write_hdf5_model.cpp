@@ -159,8 +159,8 @@ void write_file(const spline::MultiPatch& model, const std::string& path, const 
   std::vector<int> surfaces(ni);
   for (size_t k = 0; k < ni; ++k) {
     const spline::Interface& f = model.interfaces[k];
-    const int row[10] = {f.patch_a,   f.side_a,    f.patch_b,   f.side_b,    f.dirmap[0],
-                         f.dirmap[1], f.dirmap[2], f.orient[0], f.orient[1], f.orient[2]};
+    const int row[10] = {f.patch_a,   f.side_a.index(), f.patch_b,   f.side_b.index(), f.dirmap[0],
+                         f.dirmap[1], f.dirmap[2],      f.orient[0], f.orient[1],      f.orient[2]};
     std::copy(row, row + 10, faces.begin() + 10 * k);
     surfaces[k] = f.surface;
   }
@@ -173,7 +173,7 @@ void write_file(const spline::MultiPatch& model, const std::string& path, const 
   std::vector<int> bounds(nb * 3);
   for (size_t k = 0; k < nb; ++k) {
     bounds[3 * k] = model.boundaries[k].patch;
-    bounds[3 * k + 1] = model.boundaries[k].side;
+    bounds[3 * k + 1] = model.boundaries[k].side.index();
     bounds[3 * k + 2] = model.boundaries[k].label;
   }
   w.write_dataset(root, "boundaries", "dataset /boundaries", H5T_STD_I32LE, H5T_NATIVE_INT,

@@ -11,16 +11,16 @@
 
 namespace igaprep::iga_check::detail {
 
-// Calls f(ev, q, normal, dA) at every Gauss point of side `side` of patch pa:
+// Calls f(ev, q, normal, dA) at every Gauss point of `side` of patch pa:
 // the side's fixed direction is a one-point table at its end, the other two
 // use the patch's volume tables. `normal` is the unit outward normal; points
 // where the side collapses (zero area) are skipped. end_element() follows the
 // points of each element of the side.
 template <class F, class E>
-void for_side_points(const spline::Patch& pa, int side, const PatchTables& tables, F&& f, E&& end_element) {
-  const int d = spline::side_direction(side);
-  const bool at_max = spline::side_is_max(side);
-  const auto t = spline::side_tangent_directions(side);
+void for_side_points(const spline::Patch& pa, spline::Side side, const PatchTables& tables, F&& f, E&& end_element) {
+  const int d = side.direction();
+  const bool at_max = side.parameter();
+  const auto t = side.tangent_directions();
   const std::vector<double>& U = pa.knots[d];
   const int nd = pa.count(d);
   std::vector<DirElement> fixed_dir{direction_point(U, pa.degrees[d], at_max ? U[nd] : U[pa.degrees[d]])};

@@ -116,7 +116,7 @@ std::vector<SurfaceFidelity> fidelity(const spline::MultiPatch& mp, const std::v
     sf.surface = static_cast<int>(si);
     if (si < mp.labels.size()) sf.label = mp.labels[si];
     std::vector<Face> faces;
-    auto add_face = [&](int patch, int side) {
+    auto add_face = [&](int patch, spline::Side side) {
       if (patch < 0 || patch >= static_cast<int>(mp.patches.size()))
         throw bad_input("fidelity: side refers to patch " + std::to_string(patch) + ", which does not exist");
       Face f;

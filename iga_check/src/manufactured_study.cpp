@@ -133,7 +133,7 @@ ManufacturedStudy manufactured_study(const spline::MultiPatch& model, const Manu
     used_labels.insert(b.label);
   }
   for (int p = 0; p < static_cast<int>(model.patches.size()); ++p)
-    for (int s = 1; s <= 6; ++s)
+    for (const spline::Side s : spline::Side::all())
       if (!covered.count({p, s}))
         throw bad_input("manufactured study: patch " + std::to_string(p) + " side " + std::to_string(s) +
                         " is neither on an interface nor a labelled boundary side");

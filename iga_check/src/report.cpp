@@ -350,7 +350,7 @@ std::string report_json(const CheckReport& r) {
   const TopologyReport& t = r.topology;
   ordered_json collapsed = ordered_json::array();
   for (const auto& s : t.sides)
-    if (s.kind == "collapsed") collapsed.push_back({s.patch, s.side});
+    if (s.kind == "collapsed") collapsed.push_back({s.patch, s.side.index()});
   ordered_json mats = ordered_json::array();
   for (size_t m = 0; m < t.material_volumes.size(); ++m)
     mats.push_back({{"index", m},

@@ -77,7 +77,7 @@ double patch_volume(const spline::Patch& p) {
   return vol;
 }
 
-double side_area(const spline::Patch& p, int side) {
+double side_area(const spline::Patch& p, spline::Side side) {
   const spline::Surface s = spline::boundary_surface(p, side);
   std::array<std::vector<double>, 2> pts, wts;
   for (int d = 0; d < 2; ++d) gauss_grid(s.knots[d], s.degrees[d] + 2, &pts[d], &wts[d]);
@@ -110,15 +110,15 @@ TopologyReport topology_checks(const spline::MultiPatch& mp, const std::vector<m
   const int np = static_cast<int>(mp.patches.size());
   std::vector<std::array<int, 6>> uses(np, {{0, 0, 0, 0, 0, 0}});
   std::vector<std::array<bool, 6>> is_interface(np, {{false, false, false, false, false, false}});
-  auto count = [&](int patch, int side, bool itf, const std::string& what) {
-    if (patch < 0 || patch >= np || side < 1 || side > 6) {
+  auto count = [&](int patch, spline::Side side, bool itf, const std::string& what) {
+    if (patch < 0 || patch >= np || !side.valid()) {
       r.watertight = false;
       r.watertight_problems.push_back(what + " names patch " + std::to_string(patch) + " side " +
                                       std::to_string(side) + ", which does not exist");
       return;
     }
-    ++uses[patch][side - 1];
-    if (itf) is_interface[patch][side - 1] = true;
+    ++uses[patch][side.array_index()];
+    if (itf) is_interface[patch][side.array_index()] = true;
   };
   for (size_t i = 0; i < mp.interfaces.size(); ++i) {
     const auto& itf = mp.interfaces[i];
@@ -128,11 +128,11 @@ TopologyReport topology_checks(const spline::MultiPatch& mp, const std::vector<m
   for (size_t i = 0; i < mp.boundaries.size(); ++i)
     count(mp.boundaries[i].patch, mp.boundaries[i].side, false, "boundary " + std::to_string(i));
   for (int p = 0; p < np; ++p)
-    for (int s = 1; s <= 6; ++s) {
+    for (const spline::Side s : spline::Side::all()) {
       SideStatus st{p, s, ""};
-      const int n = uses[p][s - 1];
+      const int n = uses[p][s.array_index()];
       if (n == 1) {
-        st.kind = is_interface[p][s - 1] ? "interface" : "boundary";
+        st.kind = is_interface[p][s.array_index()] ? "interface" : "boundary";
       } else if (n > 1) {
         st.kind = "duplicate";
         r.watertight = false;

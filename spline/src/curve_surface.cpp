@@ -1,33 +1,14 @@
-// Side numbering, boundary faces and edges, and curves/surfaces as degenerate patches.
+// Boundary faces and edges, and curves/surfaces as degenerate patches.
 #include "igaprep/spline/curve_surface.h"
 
 #include "igaprep/core/error.h"
 
 namespace igaprep::spline {
 
-int side_direction(int side) {
-  if (side < 1 || side > 6)
-    throw bad_input("patch side " + std::to_string(side) + " is outside 1..6 (u0, u1, v0, v1, w0, w1)");
-  return (side - 1) / 2;
-}
-bool side_is_max(int side) {
-  side_direction(side);
-  return (side - 1) % 2 == 1;
-}
-int side_of(int direction, bool at_max) { return 2 * direction + (at_max ? 2 : 1); }
-
-std::array<int, 2> side_tangent_directions(int side) {
-  switch (side_direction(side)) {
-    case 0: return {{1, 2}};
-    case 1: return {{0, 2}};
-    default: return {{0, 1}};
-  }
-}
-
-std::vector<int> side_control_points(const Patch& p, int side) {
-  const int d = side_direction(side);
-  const auto t = side_tangent_directions(side);
-  const int fixed = side_is_max(side) ? p.count(d) - 1 : 0;
+std::vector<int> side_control_points(const Patch& p, Side side) {
+  const int d = side.direction();
+  const auto t = side.tangent_directions();
+  const int fixed = side.parameter() ? p.count(d) - 1 : 0;
   std::vector<int> out;
   out.reserve(static_cast<size_t>(p.count(t[0])) * p.count(t[1]));
   int ijk[3];
@@ -41,8 +22,8 @@ std::vector<int> side_control_points(const Patch& p, int side) {
   return out;
 }
 
-Surface boundary_surface(const Patch& p, int side) {
-  const auto t = side_tangent_directions(side);
+Surface boundary_surface(const Patch& p, Side side) {
+  const auto t = side.tangent_directions();
   Surface s;
   for (int k = 0; k < 2; ++k) {
     s.degrees[k] = p.degrees[t[k]];
@@ -81,13 +62,12 @@ Curve boundary_curve(const Patch& p, int direction, bool end_first, bool end_sec
   return c;
 }
 
-Curve boundary_curve(const Surface& s, int side) {
-  if (side < 1 || side > 4) throw bad_input("surface side " + std::to_string(side) + " is outside 1..4");
+Curve boundary_curve(const Surface& s, Side side) {
+  if (!side.valid() || side.direction() > 1)
+    throw bad_input("surface side " + std::to_string(side.index()) + " is outside 1..4");
   const Patch p = as_patch(s);
-  const int d = (side - 1) / 2;            // 0: u-sides (curve runs along v), 1: v-sides
-  const bool at_max = (side - 1) % 2 == 1;
-  if (d == 0) return boundary_curve(p, 1, at_max, false);
-  return boundary_curve(p, 0, at_max, false);
+  // A u-side's curve runs along v, a v-side's along u.
+  return boundary_curve(p, side.direction() == 0 ? 1 : 0, side.parameter(), false);
 }
 
 Patch as_patch(const Surface& s) {

@@ -32,7 +32,7 @@ int stitch_control_points(MultiPatch& mp, double tol, double* max_move) {
   std::vector<PointRef> refs;
   for (int p = 0; p < static_cast<int>(mp.patches.size()); ++p) {
     std::vector<int> idx;
-    for (int s = 1; s <= 6; ++s) {
+    for (const Side s : Side::all()) {
       const auto side = side_control_points(mp.patches[p], s);
       idx.insert(idx.end(), side.begin(), side.end());
     }
@@ -92,34 +92,37 @@ void find_interfaces(MultiPatch& mp, double tol) {
   std::vector<std::array<Eigen::Vector3d, 6>> centroid(static_cast<std::size_t>(np));
   std::vector<std::array<int, 6>> count(static_cast<std::size_t>(np));
   for (int p = 0; p < np; ++p)
-    for (int s = 1; s <= 6; ++s) {
+    for (const Side s : Side::all()) {
       const auto idx = side_control_points(mp.patches[p], s);
       Eigen::Vector3d c = Eigen::Vector3d::Zero();
       for (int i : idx) c += mp.patches[p].control_points.row(i).transpose();
-      centroid[p][s - 1] = c / static_cast<double>(idx.size());
-      count[p][s - 1] = static_cast<int>(idx.size());
+      centroid[p][s.array_index()] = c / static_cast<double>(idx.size());
+      count[p][s.array_index()] = static_cast<int>(idx.size());
     }
   std::vector<std::array<bool, 6>> used(static_cast<std::size_t>(np), std::array<bool, 6>{});
   for (int a = 0; a < np; ++a)
-    for (int sa = 1; sa <= 6; ++sa) {
-      if (used[a][sa - 1]) continue;
-      for (int b = a + 1; b < np && !used[a][sa - 1]; ++b)
-        for (int sb = 1; sb <= 6 && !used[a][sa - 1]; ++sb) {
-          if (used[b][sb - 1] || count[a][sa - 1] != count[b][sb - 1]) continue;
-          if ((centroid[a][sa - 1] - centroid[b][sb - 1]).norm() > tol) continue;
-          const int da = side_direction(sa), db = side_direction(sb);
-          const auto ta = side_tangent_directions(sa), tb = side_tangent_directions(sb);
+    for (const Side sa : Side::all()) {
+      const int ia = sa.array_index();
+      if (used[a][ia]) continue;
+      for (int b = a + 1; b < np && !used[a][ia]; ++b)
+        for (const Side sb : Side::all()) {
+          const int ib = sb.array_index();
+          if (used[a][ia]) break;
+          if (used[b][ib] || count[a][ia] != count[b][ib]) continue;
+          if ((centroid[a][ia] - centroid[b][ib]).norm() > tol) continue;
+          const int da = sa.direction(), db = sb.direction();
+          const auto ta = sa.tangent_directions(), tb = sb.tangent_directions();
           MultiPatch probe;
           probe.patches = {mp.patches[a], mp.patches[b]};
-          for (int swap = 0; swap < 2 && !used[a][sa - 1]; ++swap)
-            for (int o = 0; o < 4 && !used[a][sa - 1]; ++o) {
+          for (int swap = 0; swap < 2 && !used[a][ia]; ++swap)
+            for (int o = 0; o < 4 && !used[a][ia]; ++o) {
               Interface itf;
               itf.patch_a = 0;
               itf.side_a = sa;
               itf.patch_b = 1;
               itf.side_b = sb;
               itf.dirmap[da] = db;
-              itf.orient[da] = side_is_max(sa) != side_is_max(sb) ? 1 : 0;
+              itf.orient[da] = sa.parameter() != sb.parameter() ? 1 : 0;
               itf.dirmap[ta[0]] = tb[swap];
               itf.dirmap[ta[1]] = tb[1 - swap];
               itf.orient[ta[0]] = o & 1;
@@ -133,7 +136,7 @@ void find_interfaces(MultiPatch& mp, double tol) {
               itf.patch_a = a;
               itf.patch_b = b;
               mp.interfaces.push_back(itf);
-              used[a][sa - 1] = used[b][sb - 1] = true;
+              used[a][ia] = used[b][ib] = true;
             }
         }
     }

@@ -32,14 +32,14 @@ void check_interface(const MultiPatch& mp, const Interface& itf) {
   const int np = static_cast<int>(mp.patches.size());
   if (itf.patch_a < 0 || itf.patch_a >= np || itf.patch_b < 0 || itf.patch_b >= np)
     throw bad_input(name + ": patch index outside 0.." + std::to_string(np - 1));
-  if (itf.side_a < 1 || itf.side_a > 6 || itf.side_b < 1 || itf.side_b > 6)
+  if (!itf.side_a.valid() || !itf.side_b.valid())
     throw bad_input(name + ": side outside 1..6");
   std::array<int, 3> sorted = itf.dirmap;
   std::sort(sorted.begin(), sorted.end());
   if (sorted != std::array<int, 3>{{0, 1, 2}}) throw bad_input(name + ": dirmap is not a permutation of 0, 1, 2");
   for (int o : itf.orient)
     if (o != 0 && o != 1) throw bad_input(name + ": orient entries must be 0 or 1");
-  const int da = side_direction(itf.side_a), db = side_direction(itf.side_b);
+  const int da = itf.side_a.direction(), db = itf.side_b.direction();
   if (itf.dirmap[da] != db)
     throw bad_input(name + ": dirmap must map the normal direction of side_a (" + kDirName[da] +
                     ") to that of side_b (" + kDirName[db] + ")");
@@ -95,7 +95,7 @@ void validate_multipatch(const MultiPatch& mp) {
     const std::string name = "boundary " + std::to_string(i) + " (patch " + std::to_string(b.patch) + " side " +
                              std::to_string(b.side) + ")";
     if (b.patch < 0 || b.patch >= static_cast<int>(mp.patches.size())) throw bad_input(name + ": no such patch");
-    if (b.side < 1 || b.side > 6) throw bad_input(name + ": side outside 1..6");
+    if (!b.side.valid()) throw bad_input(name + ": side outside 1..6");
     if (b.label < 0 || b.label >= static_cast<int>(mp.labels.size()))
       throw bad_input(name + ": label " + std::to_string(b.label) + " does not exist");
   }
@@ -104,16 +104,16 @@ void validate_multipatch(const MultiPatch& mp) {
 int map_to_neighbour(const MultiPatch& mp, const Interface& itf, int local_a) {
   check_interface(mp, itf);
   const Patch &A = mp.patches[itf.patch_a], &B = mp.patches[itf.patch_b];
-  const int da = side_direction(itf.side_a), db = side_direction(itf.side_b);
+  const int da = itf.side_a.direction(), db = itf.side_b.direction();
   int ia[3];
   ia[0] = local_a % A.count(0);
   ia[1] = (local_a / A.count(0)) % A.count(1);
   ia[2] = local_a / (A.count(0) * A.count(1));
-  if (local_a < 0 || ia[2] >= A.count(2) || ia[da] != (side_is_max(itf.side_a) ? A.count(da) - 1 : 0))
+  if (local_a < 0 || ia[2] >= A.count(2) || ia[da] != (itf.side_a.parameter() ? A.count(da) - 1 : 0))
     throw bad_input(itf_name(mp, itf) + ": control point " + std::to_string(local_a) + " of patch " +
                     std::to_string(itf.patch_a) + " is not on side " + std::to_string(itf.side_a));
   int ib[3];
-  ib[db] = side_is_max(itf.side_b) ? B.count(db) - 1 : 0;
+  ib[db] = itf.side_b.parameter() ? B.count(db) - 1 : 0;
   for (int d = 0; d < 3; ++d) {
     if (d == da) continue;
     const int e = itf.dirmap[d];
@@ -146,7 +146,7 @@ ConformityReport check_conformity(const MultiPatch& mp, double tol) {
       continue;
     }
     const Patch &A = mp.patches[itf.patch_a], &B = mp.patches[itf.patch_b];
-    const int da = side_direction(itf.side_a);
+    const int da = itf.side_a.direction();
     bool knots_ok = true;
     for (int d = 0; d < 3; ++d) {
       if (d == da) continue;

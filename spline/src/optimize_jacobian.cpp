@@ -318,8 +318,8 @@ std::vector<std::vector<Copy>> control_point_copies(const MultiPatch& mp, const 
 std::vector<int> constraints(const MultiPatch& mp, const GlobalNumbering& num,
                              const std::vector<std::pair<int, int>>& fixed_sides, bool can_slide) {
   std::vector<int> cons(static_cast<std::size_t>(num.count), kFree);
-  auto mark = [&](int patch, int side, int surface) {
-    if (patch < 0 || static_cast<std::size_t>(patch) >= mp.patches.size() || side < 1 || side > 6)
+  auto mark = [&](int patch, Side side, int surface) {
+    if (patch < 0 || static_cast<std::size_t>(patch) >= mp.patches.size() || !side.valid())
       throw bad_input("optimize_jacobians: bad side (patch " + std::to_string(patch) + ", side " + std::to_string(side) + ")");
     for (int l : side_control_points(mp.patches[static_cast<std::size_t>(patch)], side)) {
       int& c = cons[static_cast<std::size_t>(num.global[static_cast<std::size_t>(patch)][static_cast<std::size_t>(l)])];

@@ -52,7 +52,7 @@ inline igaprep::spline::MultiPatch single(const igaprep::spline::Patch& p) {
   mp.patches.push_back(p);
   mp.labels = {"outer"};
   mp.materials.push_back({"steel", 200e9, 0.3});
-  for (int s = 1; s <= 6; ++s) mp.boundaries.push_back({0, s, 0});
+  for (const igaprep::spline::Side s : igaprep::spline::Side::all()) mp.boundaries.push_back({0, s, 0});
   return mp;
 }
 

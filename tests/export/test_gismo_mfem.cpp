@@ -57,7 +57,7 @@ TEST(GismoXml, IndependentReaderGetsTheModelBack) {
     return v;
   };
   for (const auto& f : mp.interfaces) {
-    json r = {f.patch_a,   f.side_a,    f.patch_b,   f.side_b,    f.dirmap[0], f.dirmap[1],
+    json r = {f.patch_a,   f.side_a.index(), f.patch_b, f.side_b.index(), f.dirmap[0], f.dirmap[1],
               f.dirmap[2], f.orient[0], f.orient[1], f.orient[2], f.surface >= 0 ? mp.labels[f.surface] : ""};
     expected.insert(row(r));
   }
@@ -65,7 +65,7 @@ TEST(GismoXml, IndependentReaderGetsTheModelBack) {
   EXPECT_EQ(got, expected);
   // Boundaries with their label names.
   std::set<std::vector<std::string>> eb, gb;
-  for (const auto& b : mp.boundaries) eb.insert(row(json{b.patch, b.side, mp.labels[b.label]}));
+  for (const auto& b : mp.boundaries) eb.insert(row(json{b.patch, b.side.index(), mp.labels[b.label]}));
   for (const auto& r : g["boundaries"]) gb.insert(row(r));
   EXPECT_EQ(gb, eb);
   EXPECT_EQ(gb.size(), 16u);
@@ -112,8 +112,8 @@ TEST(MfemMesh, IndependentReaderGetsTheModelBackAndMfemChecksPass) {
   for (size_t k = 0; k < mp.boundaries.size(); ++k) {
     const auto& b = mp.boundaries[k];
     EXPECT_EQ(m["boundary"][k][0].get<int>(), b.label + 1);
-    const int dir = igaprep::spline::side_direction(b.side);
-    const int end = igaprep::spline::side_is_max(b.side) ? 1 : 0;
+    const int dir = b.side.direction();
+    const int end = b.side.parameter() ? 1 : 0;
     std::set<int> want, have;
     for (int v = 0; v < 8; ++v)
       if (corner_bits[v][dir] == end) want.insert(m["elements"][b.patch][1 + v].get<int>());

@@ -114,7 +114,7 @@ inline void label_boundaries(MultiPatch& mp, const std::function<std::string(con
   using namespace igaprep::spline;
   mp.boundaries.clear();
   for (int p = 0; p < static_cast<int>(mp.patches.size()); ++p)
-    for (int s = 1; s <= 6; ++s) {
+    for (const Side s : Side::all()) {
       bool on_interface = false;
       for (const auto& itf : mp.interfaces)
         on_interface |= (itf.patch_a == p && itf.side_a == s) || (itf.patch_b == p && itf.side_b == s);
@@ -125,8 +125,8 @@ inline void label_boundaries(MultiPatch& mp, const std::function<std::string(con
         const double lo = pa.knots[d].front(), hi = pa.knots[d].back();
         uvw(d) = 0.5 * (lo + hi);
       }
-      const int d = side_direction(s);
-      uvw(d) = side_is_max(s) ? pa.knots[d].back() : pa.knots[d].front();
+      const int d = s.direction();
+      uvw(d) = s.parameter() ? pa.knots[d].back() : pa.knots[d].front();
       const std::string name = classify(evaluate_point(pa, uvw));
       auto it = std::find(mp.labels.begin(), mp.labels.end(), name);
       int label = static_cast<int>(it - mp.labels.begin());

@@ -133,12 +133,12 @@ TEST(SplineEvaluate, BoundaryFacesAndEdgesAreExact) {
   std::mt19937 rng(6);
   const Patch P = random_patch(rng, {{2, 3, 1}}, {{4, 5, 3}}, true);
   std::uniform_real_distribution<double> R(0, 1);
-  for (int side = 1; side <= 6; ++side) {
+  for (const Side side : Side::all()) {
     const Surface S = boundary_surface(P, side);
-    const auto t = side_tangent_directions(side);
+    const auto t = side.tangent_directions();
     for (int s = 0; s < 50; ++s) {
       Eigen::Vector3d u;
-      u[side_direction(side)] = side_is_max(side) ? 1.0 : 0.0;
+      u[side.direction()] = side.parameter() ? 1.0 : 0.0;
       u[t[0]] = R(rng);
       u[t[1]] = R(rng);
       EXPECT_LT((evaluate_point(S, Eigen::Vector2d(u[t[0]], u[t[1]])) - evaluate_point(P, u)).norm(), 1e-14);

@@ -62,7 +62,7 @@ double dense_min(const Patch& P) {
 }
 
 // Whether the control points of `side` are bitwise those of `before`.
-bool side_unchanged(const Patch& before, const Patch& after, int side) {
+bool side_unchanged(const Patch& before, const Patch& after, Side side) {
   for (int l : side_control_points(before, side))
     if (!(before.control_points.row(l).array() == after.control_points.row(l).array()).all()) return false;
   return true;
@@ -70,7 +70,7 @@ bool side_unchanged(const Patch& before, const Patch& after, int side) {
 
 // Records all six sides of patch `p` as boundaries with `label`.
 void label_sides(MultiPatch& mp, int p, int label) {
-  for (int side = 1; side <= 6; ++side) mp.boundaries.push_back({p, side, label});
+  for (const Side side : Side::all()) mp.boundaries.push_back({p, side, label});
 }
 
 // The cube with interior control point (2, 2, 1) pulled towards the bottom face.
@@ -102,13 +102,13 @@ TEST(OptimizeJacobian, RaisesSkewedInterior) {
   EXPECT_GT(dense_after, dense_before);
   EXPECT_GT(r.moved_points, 0);
   EXPECT_GT(r.max_move, 0.0);
-  for (int side = 1; side <= 6; ++side) EXPECT_TRUE(side_unchanged(before, mp.patches[0], side)) << "side " << side;
+  for (const Side side : Side::all()) EXPECT_TRUE(side_unchanged(before, mp.patches[0], side)) << "side " << side;
 }
 
 // A control point of the labelled side w0 slides in its plane; the other labelled sides stay.
 TEST(OptimizeJacobian, SlidesOnLabelledSide) {
   MultiPatch mp = model({skewed_bottom()});
-  for (int side = 1; side <= 6; ++side) mp.boundaries.push_back({0, side, side == kW0 ? 0 : 1});
+  for (const Side side : Side::all()) mp.boundaries.push_back({0, side, side == kW0 ? 0 : 1});
   const Patch before = mp.patches[0];
   const SlideFn slide = [](int surface, const Eigen::Vector3d& from, const Eigen::Vector3d& to) -> Eigen::Vector3d {
     return surface == 0 ? Eigen::Vector3d(to.x(), to.y(), from.z()) : from;
@@ -125,7 +125,7 @@ TEST(OptimizeJacobian, SlidesOnLabelledSide) {
       ++slid;
   }
   EXPECT_GT(slid, 0);
-  for (int side = 1; side <= 6; ++side)
+  for (const Side side : Side::all())
     if (side != kW0) EXPECT_TRUE(side_unchanged(before, after, side)) << "side " << side;
 }
 
@@ -137,7 +137,7 @@ TEST(OptimizeJacobian, SharedFaceStaysConforming) {
   mp.patches[1].control_points.row(mp.patches[1].index(0, 1, 1)) += D;
   find_interfaces(mp, 1e-9);
   ASSERT_EQ(mp.interfaces.size(), 1u);
-  for (int side = 1; side <= 6; ++side) {
+  for (const Side side : Side::all()) {
     if (side != kU1) mp.boundaries.push_back({0, side, 0});
     if (side != kU0) mp.boundaries.push_back({1, side, 0});
   }

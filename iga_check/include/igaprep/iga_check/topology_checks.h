@@ -26,10 +26,11 @@ double winding_number(const mesh::TriMesh& m, const Eigen::Vector3d& x);
 double patch_volume(const spline::Patch& p);
 
 // Area of a patch side (Gauss quadrature of |x_s x x_t|).
-double side_area(const spline::Patch& p, int side);
+double side_area(const spline::Patch& p, spline::Side side);
 
 struct SideStatus {
-  int patch = 0, side = 0;
+  int patch = 0;
+  spline::Side side;
   std::string kind;  // "interface", "boundary", "collapsed", "missing", "duplicate"
 };
 

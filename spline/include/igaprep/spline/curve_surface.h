@@ -31,28 +31,20 @@ struct Surface {
   bool rational() const { return weights.size() > 0; }
 };
 
-// Side helpers (G+Smo numbering 1..6 = u0, u1, v0, v1, w0, w1).
-int side_direction(int side);             // 0, 1 or 2; throws bad_input for a side outside 1..6
-bool side_is_max(int side);               // true for u1, v1, w1
-int side_of(int direction, bool at_max);  // inverse of the two above
-// The two patch directions that parameterize a face, in increasing order:
-// side u0/u1 -> (v, w), v0/v1 -> (u, w), w0/w1 -> (u, v).
-std::array<int, 2> side_tangent_directions(int side);
-
 // Indices of the control points of patch `p` on `side`, ordered u fastest over
-// side_tangent_directions(side) (the face's own control-point order).
-std::vector<int> side_control_points(const Patch& p, int side);
+// side.tangent_directions() (the face's own control-point order).
+std::vector<int> side_control_points(const Patch& p, Side side);
 
 // The face of a volume on `side` as a surface: surface direction 0/1 =
-// side_tangent_directions(side)[0/1], same knots, points and weights. Exact.
-Surface boundary_surface(const Patch& p, int side);
+// side.tangent_directions()[0/1], same knots, points and weights. Exact.
+Surface boundary_surface(const Patch& p, Side side);
 
 // The edge of a volume running along `direction`, at the low (false) or high
 // (true) end of the two other directions (taken in increasing order). Exact.
 Curve boundary_curve(const Patch& p, int direction, bool end_first, bool end_second);
 
 // The edge of a surface on side 1..4 (u0, u1, v0, v1) as a curve. Exact.
-Curve boundary_curve(const Surface& s, int side);
+Curve boundary_curve(const Surface& s, Side side);
 
 // A surface or curve as a degenerate Patch (degree 0, one element in the
 // missing directions), so that every Patch algorithm applies to it.

@@ -7,10 +7,9 @@
 #include <string>
 #include <vector>
 
-namespace igaprep::spline {
+#include "igaprep/spline/side.h"
 
-// Patch sides follow G+Smo: 1 = u0, 2 = u1, 3 = v0, 4 = v1, 5 = w0, 6 = w1.
-enum Side : int { kU0 = 1, kU1 = 2, kV0 = 3, kV1 = 4, kW0 = 5, kW1 = 6 };
+namespace igaprep::spline {
 
 // One trivariate tensor-product patch, B-spline or NURBS.
 struct Patch {
@@ -31,14 +30,19 @@ struct Patch {
 // of patch b that runs along direction d of patch a; orient[d] is 1 when it
 // runs the same sense, 0 when reversed.
 struct Interface {
-  int patch_a = 0, side_a = 0, patch_b = 0, side_b = 0;
+  int patch_a = 0;
+  Side side_a;
+  int patch_b = 0;
+  Side side_b;
   std::array<int, 3> dirmap{{0, 1, 2}};
   std::array<int, 3> orient{{1, 1, 1}};
   int surface = -1;  // index into MultiPatch::labels of the input surface it lies on, or -1
 };
 
 struct BoundarySide {
-  int patch = 0, side = 0, label = 0;  // label: index into MultiPatch::labels
+  int patch = 0;
+  Side side;
+  int label = 0;  // index into MultiPatch::labels
 };
 
 struct Material {

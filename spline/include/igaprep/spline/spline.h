@@ -10,3 +10,4 @@
 #include "igaprep/spline/multipatch.h"
 #include "igaprep/spline/multipatch_topology.h"
 #include "igaprep/spline/refine.h"
+#include "igaprep/spline/side.h"

@@ -265,7 +265,8 @@ CheckReport build_check_report(const spline::MultiPatch& mp, const std::vector<m
     v << " not certified positive (" << counts[1] << " negative, " << counts[2] << " degenerate"
       << (options.allow_degenerate ? " allowed" : "") << ", " << counts[3] << " undecided elements)";
     if (!options.allow_degenerate && counts[1] == 0 && counts[3] == 0)
-      v << "; only degenerate elements fail: --allow-degenerate accepts them";
+      v << "; only degenerate elements fail: a check that allows degenerate elements "
+           "(CheckOptions::allow_degenerate) accepts them";
   }
   r.verdict = v.str();
   return r;

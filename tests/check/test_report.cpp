@@ -79,6 +79,9 @@ TEST(CheckReport, SphereShellReportFilesAndDocumentedKeys) {
   const CheckReport strict = build_check_report(mp, surfaces, {"outer", "inner"}, opt, "sphere_shell");
   EXPECT_FALSE(strict.passed);  // the poles make degenerate elements
   EXPECT_EQ(strict.failed_patches, (std::vector<int>{0, 1, 2, 3}));
+  // The verdict says what would pass, in the library's terms (no command-line option).
+  EXPECT_NE(strict.verdict.find("only degenerate elements fail"), std::string::npos) << strict.verdict;
+  EXPECT_EQ(strict.verdict.find("--"), std::string::npos) << strict.verdict;
   opt.allow_degenerate = true;
   const CheckReport r = build_check_report(mp, surfaces, {"outer", "inner"}, opt, "sphere_shell");
   EXPECT_TRUE(r.passed) << r.verdict;

@@ -1,0 +1,54 @@
+// Solves on several threads at once (a thread pool, Python) share no mutable
+// state: each gives bitwise the result of the same solve run alone.
+#include <gtest/gtest.h>
+
+#include <thread>
+#include <vector>
+
+#include "igaprep/iga_check/elasticity_solve.h"
+#include "solve_models.h"
+
+using namespace igaprep;
+using namespace solve_test;
+
+namespace {
+
+MultiPatch bar(int degree) {
+  MultiPatch mp;
+  mp.patches = {box_patch({0, 0, 0}, {1, 1, 1}, {degree, degree, degree}, {2, 2, 2}),
+                box_patch({1, 0, 0}, {2, 1, 1}, {degree, degree, degree}, {2, 2, 2})};
+  mp.materials = {{"steel", 1000.0, 0.3}};
+  find_interfaces(mp);
+  label_boundaries(mp, [](const Eigen::Vector3d& x) {
+    if (std::abs(x(0)) < 1e-9) return std::string("base");
+    if (std::abs(x(0) - 2) < 1e-9) return std::string("end");
+    return std::string("free");
+  });
+  return mp;
+}
+
+iga_check::ElasticitySolution solve(int k) {
+  iga_check::ElasticityProblem problem;
+  problem.fixed = {{"base", {{true, true, true}}}};
+  problem.pressures = {{"end", 0.5 + k}};
+  iga_check::ElasticityOptions options;
+  options.extra_quadrature = k % 4;  // different Gauss rules on different threads
+  return iga_check::solve_elasticity(bar(1 + k % 3), problem, options);
+}
+
+}  // namespace
+
+TEST(SolveThreads, ConcurrentSolvesMatchSolvesAlone) {
+  const int n = 8;
+  std::vector<iga_check::ElasticitySolution> alone, together(n);
+  for (int k = 0; k < n; ++k) alone.push_back(solve(k));
+  std::vector<std::thread> threads;
+  for (int k = 0; k < n; ++k) threads.emplace_back([k, &together] { together[k] = solve(k); });
+  for (auto& t : threads) t.join();
+  for (int k = 0; k < n; ++k) {
+    EXPECT_EQ(together[k].report.strain_energy, alone[k].report.strain_energy) << k;
+    EXPECT_EQ(together[k].report.quadrature_points, alone[k].report.quadrature_points) << k;
+    for (size_t p = 0; p < alone[k].model.patches.size(); ++p)
+      EXPECT_TRUE(together[k].model.patches[p].displacement == alone[k].model.patches[p].displacement) << k << " " << p;
+  }
+}

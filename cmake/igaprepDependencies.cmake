@@ -5,6 +5,8 @@ include(CMakeFindDependencyMacro)
 
 find_dependency(Eigen3 3.3 NO_MODULE)
 find_dependency(CGAL)
+find_dependency(nlohmann_json 3)
+find_dependency(OpenSSL)
 # FindHDF5 test-compiles a C program: a C++-only consumer needs C enabled.
 if(NOT CMAKE_C_COMPILER_LOADED)
   enable_language(C)

@@ -204,11 +204,12 @@ bool sheet_self_intersects(const mesh::TriMesh& sheet) {
   return CGAL::Polygon_mesh_processing::does_self_intersect(sm);
 }
 
-InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double m0, int smoothing) {
-  if (!(m0 > 0.0 && m0 < 1.0)) throw bad_input("inset base surface: m0 = " + std::to_string(m0) + " is outside (0, 1)");
+InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double inset, int smoothing) {
+  if (!(inset > 0.0 && inset < 1.0))
+    throw bad_input("inset base surface: inset = " + std::to_string(inset) + " is outside (0, 1)");
   const RectilinearDomain& D = polycube.domain;
   const double band = narrowest_band(D);
-  const double d = 0.5 * m0 * band;
+  const double d = 0.5 * inset * band;
 
   InsetBase out;
   out.inset = d;

@@ -22,7 +22,6 @@ void build_m0(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOption
 MidsurfaceResult build_midsurface(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOptions& o,
                                   const std::string& name) {
   if (surfaces.empty()) throw bad_input("midsurface: no surfaces");
-  if (!(o.m0 > 0.0 && o.m0 < 1.0)) throw bad_input("midsurface: m0 must lie in (0, 1), got " + std::to_string(o.m0));
   MidsurfaceResult r;
   const mesh::TriMesh& T1 = surfaces[0];
   if (o.cut == MidsurfaceOptions::CutKind::Automatic) {
@@ -66,7 +65,6 @@ MidsurfaceResult build_midsurface(const std::vector<mesh::TriMesh>& surfaces, co
     r.m0trim.m0_vertex.tail(r.m0trim.mesh.V.rows() - old).setConstant(-1);
     r.m0trim.m0_face = Eigen::VectorXi::Constant(r.m0trim.mesh.F.rows(), -1);
   }
-  r.base = base_surface(r.m0trim.mesh, r.polycube, o.m0, r.cut.genus + 1);
   return r;
 }
 

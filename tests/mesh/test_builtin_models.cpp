@@ -33,7 +33,7 @@ TEST_P(BuiltinModel, SurfacesAreValidWithExpectedGenusAndSize) {
 TEST_P(BuiltinModel, CommittedFilesMatchTheGenerator) {
   auto model = make_builtin_model(GetParam());
   for (std::size_t i = 0; i < model.surfaces.size(); ++i) {
-    const std::string file = igaprep::models::builtin_models_dir() + "/" + GetParam() + "/" + model.labels[i] + ".off";
+    const std::string file = std::string(IGAPREP_SOURCE_DIR) + "/models/" + GetParam() + "/" + model.labels[i] + ".off";
     auto committed = igaprep::mesh::read_surface(file);
     ASSERT_EQ(committed.F.rows(), model.surfaces[i].F.rows()) << file;
     ASSERT_EQ(committed.V.rows(), model.surfaces[i].V.rows()) << file;

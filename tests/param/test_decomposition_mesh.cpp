@@ -35,7 +35,7 @@ TEST_P(DecompositionMeshTest, EveryTriangleOfMIsAMarkedTetFace) {
   const auto& c = decomposition_test::cached(GetParam(), false);
   const auto& H = c.H;
   const auto& model = c.mid->model;
-  const auto& M = c.mid->result.base.mesh;
+  const auto& M = c.base.m.mesh;
   const int n = static_cast<int>(model.surfaces.size());
   ASSERT_EQ(H.num_surfaces, n);
   // The input vertices keep their positions at the recorded offsets.
@@ -119,7 +119,7 @@ TEST_P(DecompositionMeshTest, SplittingChordsRemovesFlatTets) {
 
 TEST(DecompositionMesh, BaseSurfaceCrossingT2IsBadInput) {
   const auto& mid = midsurface_test::cached("sphere2");
-  igaprep::mesh::TriMesh big = mid.result.base.mesh;
+  igaprep::mesh::TriMesh big = decomposition_test::cached("sphere2", false).base.m.mesh;
   const Eigen::RowVector3d centre = big.V.colwise().mean();
   big.V = ((big.V.rowwise() - centre) * 2.5).rowwise() + centre;  // reaches out through T2
   int outside = 0;

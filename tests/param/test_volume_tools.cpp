@@ -380,7 +380,7 @@ TEST(InsetBaseSurface, AlignedHolesStayAligned) {
   pc.domain.holes = holes;
   pc.domain.hole_loop = {1, 2};
   pc.uv = sheet.V.leftCols(2);
-  const InsetBase base = inset_base_surface(sheet, pc, 0.5);
+  const InsetBase base = inset_base_surface(sheet, pc, 0.5, 20);
   ASSERT_EQ(base.domain.holes.size(), 2u);
   EXPECT_EQ(base.domain.holes[0](1), base.domain.holes[1](1));
   EXPECT_EQ(base.domain.holes[0](3), base.domain.holes[1](3));
@@ -433,7 +433,7 @@ TEST(InsetBaseSurface, BadM0) {
   pc.uv = sheet.V.leftCols(2);
   for (double m0 : {0.0, 1.0, -0.2}) {
     try {
-      inset_base_surface(sheet, pc, m0);
+      inset_base_surface(sheet, pc, m0, 20);
       ADD_FAILURE() << "m0 = " << m0 << " accepted";
     } catch (const Error& e) {
       EXPECT_EQ(e.kind(), ErrorKind::BadInput);
@@ -823,7 +823,7 @@ TEST(BaseLayout, FromAnInsetSheet) {
   pc.domain.holes = {hole};
   pc.domain.hole_loop = {1};
   pc.uv = sheet.V.leftCols(2);
-  const BaseLayout L = base_layout(inset_base_surface(sheet, pc, 0.25));
+  const BaseLayout L = base_layout(inset_base_surface(sheet, pc, 0.25, 20));
   EXPECT_EQ(L.rectangles.size(), 8u);
   EXPECT_EQ(L.crests.size(), 16u);
   // Every crest segment is covered by boundary edges of the sheet: its

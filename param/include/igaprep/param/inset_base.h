@@ -45,15 +45,14 @@ double narrowest_band(const RectilinearDomain& domain);
 // pinned vertex is never moved. Returns the number of edges collapsed.
 int collapse_short_edges(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, const std::vector<char>& pinned, double min_length);
 
-// Inputs: M0trim with its 2D polycube, m0 in (0, 1) (the case's
-// decomposition.inset): d = m0 x half the
+// Inputs: M0trim with its 2D polycube, `inset` in (0, 1): d = inset x half the
 // narrowest band of the domain (its width, its height, and the gaps between
 // holes and between a hole and the outside); rounds of Taubin smoothing of
 // the 3D positions along the normals (the domain's corners fixed; halved
 // until M does not intersect itself, InsetBase::smoothing). Output: the inset sheet.
 // Throws check_failed when the result is not one sheet with one boundary
 // loop per domain boundary.
-InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double m0, int smoothing = 20);
+InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double inset, int smoothing);
 
 // Taubin smoothing (lambda 0.5, mu -0.53) of a sheet's vertices along their
 // normals (no tangential drift under the (u, v) map); `fixed` vertices stay.

@@ -42,9 +42,6 @@ namespace igaprep::param {
 
 struct VolumeParamOptions {
   int strategy = 2;  // section 6: 2 (default) or 1
-  double inset = 0.3;  // base surface: M0trim inset by this fraction of half its narrowest band (inset_base.h)
-  bool sliding_uv = true;  // base surface: cut along the iso-lines of sliding_uv.h (else the midsurface's (u, v))
-  int smoothing = 5;   // rounds of Taubin smoothing of the inset base surface (more: TetGen saw M intersect itself on torus3)
   // Angle of S+ and S- from M's plane at its boundary: 1.1 rad (63 degrees); pi/4 leaves the crests'
   // shells so thin near T1 that the fit folds there, and repairing that costs fidelity (docs/decomposition.md).
   double theta = 1.1;

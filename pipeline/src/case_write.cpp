@@ -89,8 +89,9 @@ void add_stage_options(const Case& c, json& root) {
   root["midsurface"] = mid;
   const auto& v = c.volume;
   root["decomposition"] = {{"inset", c.base.inset}, {"smoothing", c.base.smoothing}, {"sliding_uv", c.base.sliding_uv},
-                           {"strategy", v.strategy}, {"theta", v.theta}, {"w0", v.w0}, {"blend", v.blend},
+                           {"strategy", v.strategy}, {"theta", v.theta}, {"blend", v.blend},
                            {"crest_reach", v.crest_reach}, {"surface_degree", v.surface_degree}};
+  if (v.w0 >= 0.0) root["decomposition"]["w0"] = v.w0;  // absent: midway, at least 0.75
   root["fit"] = {{"degree", c.fit.degree}, {"elements", c.fit.elements}, {"oversample", c.fit.oversample},
                  {"jacobian_target", c.jacobian.target}, {"jacobian_sweeps", c.jacobian.sweeps},
                  {"jacobian_points", c.jacobian.points}};

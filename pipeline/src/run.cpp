@@ -96,7 +96,6 @@ void run_load_case(const Case& c, Observer& observer, const RunOptions& o, RunRe
   iga_check::PipelineSection& p = *r.report.pipeline;
   try {
     const LoadCaseResult lc = load_case_stage(r.model, *c.load_case, observer);
-    stages.push_back({"load_case", lc.seconds});
     const auto& rep = lc.solution.report;
     r.load_case = LoadCaseFigures{rep.unknowns, rep.strain_energy, rep.max_displacement};
     p.figures.emplace_back("load_case_unknowns", static_cast<double>(rep.unknowns));

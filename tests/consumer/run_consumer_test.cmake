@@ -46,3 +46,15 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "provenance of the installed run's model: ${out}${err}")
 endif()
 message(STATUS "${out}")
+
+# The installed Python module, from outside the build tree.
+file(GLOB python_dirs ${WORK_DIR}/prefix/lib/python3*/dist-packages)
+execute_process(COMMAND ${CMAKE_COMMAND} -E env PYTHONPATH=${python_dirs} /usr/bin/python3 -c
+  "import igaprep, json; c = json.load(open('${SOURCE_DIR}/models/sphere2/case.json')); c['validation'] = {'enabled': False}; \
+m, r = igaprep.run(c, folder='${SOURCE_DIR}/models/sphere2', write_outputs=False); \
+assert igaprep.__file__.startswith('${WORK_DIR}/prefix'), igaprep.__file__; print('python ok', r['check']['passed'], len(m.patches))"
+  WORKING_DIRECTORY ${WORK_DIR}/elsewhere RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "python ok True 26")
+  message(FATAL_ERROR "installed Python module: ${out}${err}")
+endif()
+message(STATUS "${out}")

@@ -259,6 +259,7 @@ Case parse_case(const std::string& json_text, const std::string& folder_name, co
   Case c;
   c.text = json_text;
   ObjectReader r(root, "", source);
+  r.find("comment");  // free text for people (where a case's choices came from); not read
   c.name = r.string("name", folder.filename().string());
   const json* surfaces = r.find("surfaces");
   if (!surfaces || !surfaces->is_array() || surfaces->empty())

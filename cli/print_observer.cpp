@@ -1,12 +1,34 @@
 #include "print_observer.h"
 
+#include <unistd.h>
+
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 namespace igaprep::cli {
 
 PrintObserver::PrintObserver(std::string dir, std::set<std::string> wanted, bool all)
-    : dir_(std::move(dir)), wanted_(std::move(wanted)), all_(all) {}
+    : dir_(std::move(dir)),
+      wanted_(std::move(wanted)),
+      all_(all),
+      bar_(isatty(STDERR_FILENO) != 0 && std::getenv("IGAPREP_NO_PROGRESS") == nullptr) {}
+
+void PrintObserver::progress(const std::string& task, std::size_t done, std::size_t total) {
+  if (!bar_ || total == 0) return;
+  if (done == 0 || task_start_ == std::chrono::steady_clock::time_point{}) task_start_ = std::chrono::steady_clock::now();
+  const std::size_t percent = done * 100 / total;
+  constexpr std::size_t kWidth = 30;
+  std::fprintf(stderr, "\r%-24s [", task.c_str());
+  for (std::size_t i = 0; i < kWidth; ++i) std::fputc(i < percent * kWidth / 100 ? '#' : '.', stderr);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - task_start_).count();
+  std::fprintf(stderr, "] %3zu%% %6.1fs", percent, seconds);
+  if (done == total) {
+    std::fputc('\n', stderr);
+    task_start_ = {};
+  }
+  std::fflush(stderr);
+}
 
 void PrintObserver::stage_finished(const pipeline::StageSummary& s) {
   std::printf("%-10s %7.2f s  %s\n", s.stage.c_str(), s.seconds, s.headline.c_str());

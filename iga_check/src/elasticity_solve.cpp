@@ -570,7 +570,7 @@ ElasticitySolution solve_elasticity(const spline::MultiPatch& input, const Elast
   double ud_Kdd_ud = 0.0;
   const bool has_body = problem.body_force.squaredNorm() > 0.0 || static_cast<bool>(problem.body_force_function);
   {
-    Progress progress("assembling stiffness", element_cps.size());
+    Progress progress("assembling stiffness", element_cps.size(), options.progress);
     detail::ElementValues ev;
     Eigen::MatrixXd Ke, work;
     Eigen::VectorXd ue, Ku_e;

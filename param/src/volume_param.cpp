@@ -344,7 +344,7 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
 
   // Shell: streamlines from every sample of every outer core face, cut at the layers' w-levels.
   const std::vector<SurfaceProjector> surface = surface_projectors(H);  // T1..Tn
-  Progress progress("streamlines", core_faces.size());
+  Progress progress("streamlines", core_faces.size(), options.progress);
   for (std::size_t f = 0; f < core_faces.size(); ++f) {
     const ShellBase& face = core_faces[f];
     // A ruled face needs the columns of its rows j = 0, m - 1 (and the middle one) only.

@@ -46,7 +46,9 @@ Check check_stage(const spline::MultiPatch& mp, const std::vector<mesh::TriMesh>
                   const iga_check::CheckOptions& options, Observer& observer) {
   StageTimer timer;
   Check c;
-  c.report = iga_check::build_check_report(mp, surfaces, mp.labels, options, "model.h5");
+  iga_check::CheckOptions with_progress = options;
+  with_progress.certify.progress = progress_to(observer);
+  c.report = iga_check::build_check_report(mp, surfaces, mp.labels, with_progress, "model.h5");
   c.figures = figures_of(c.report, surfaces);
   c.figures.seconds = timer.seconds();
   observer.stage_finished({"check", c.figures.seconds, headline(c.report, c.figures, mp.labels), {}});

@@ -90,8 +90,9 @@ Decomposition decompose_stage(const Case& c, const Surfaces& surfaces, const par
 
 param::VolumeParam param_stage(const Case& c, const Decomposition& d, Observer& observer) {
   StageTimer timer;
-  param::VolumeParam vp =
-      param::build_volume_param(d.H, d.w, d.layout, spline::block_sample_params(c.fit), c.volume);
+  param::VolumeParamOptions options = c.volume;
+  options.progress = progress_to(observer);
+  param::VolumeParam vp = param::build_volume_param(d.H, d.w, d.layout, spline::block_sample_params(c.fit), options);
   StageSummary s{"param", timer.seconds(),
                  text("strategy %d, w0 = %.3f: %zu blocks (%d core faces x %d layers + core), %d streamlines, %d "
                       "folded sample cells",

@@ -203,6 +203,7 @@ LoadCaseResult load_case_stage(const spline::MultiPatch& mp, const CaseLoadCase&
   iga_check::ElasticityOptions options;
   options.refine = lc.refine;
   options.solver = linear_solver(lc.solver);
+  options.progress = progress_to(observer);
   LoadCaseResult r;
   r.solution = iga_check::solve_elasticity(lab.model, problem, options);
   r.seconds = timer.seconds();

@@ -34,6 +34,8 @@
 
 #include <Eigen/Core>
 
+#include "igaprep/core/progress.h"
+
 #include "igaprep/param/base_layout.h"
 #include "igaprep/param/decomposition_mesh.h"
 #include "igaprep/param/w_field.h"
@@ -53,6 +55,7 @@ struct VolumeParamOptions {
   int surface_degree = 6;
   double ray_step = 2e-3;     // ray march step, fraction of H's bounding-box diagonal
   double stream_step = 1e-3;  // streamline step (Runge-Kutta 4), fraction of the diagonal
+  ProgressCallback progress;  // streamlines traced, per core face
 };
 
 enum class BlockKind { CoreTop, CoreBottom, Crest, Shell };

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "igaprep/core/progress.h"
 #include "igaprep/mesh/write_vtu.h"
 
 namespace igaprep::pipeline {
@@ -35,6 +36,13 @@ class Observer {
   }
   virtual void intermediate(const std::string& name, const mesh::VtuMesh& mesh) { (void)name, (void)mesh; }
 };
+
+// A progress callback for the library's options that reports to the observer.
+inline ProgressCallback progress_to(Observer& observer) {
+  return [&observer](const std::string& task, std::size_t done, std::size_t total) {
+    observer.progress(task, done, total);
+  };
+}
 
 // Sends an intermediate to the observer when it wants it; `make` builds the
 // VTU only then.

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -54,9 +56,10 @@ TEST(SolveBadInput, SingularConstraintsNameTheFreeMotion) {
   ASSERT_EQ(mp.interfaces.size(), 1u);
   auto problem = clamped_pulled();
   problem.fixed = {{"base", {{true, false, false}}}};  // only u_x = 0 on a plane: y, z, rotation about x free
-  expect_bad_input([&] { iga_check::solve_elasticity(mp, problem); }, {"rigid-body", "free"});
+  expect_bad_input([&] { iga_check::solve_elasticity(mp, problem); }, {"rigid-body", "free", "'base', 'free', 'end'"});
   problem.fixed.clear();
-  expect_bad_input([&] { iga_check::solve_elasticity(mp, problem); }, {"6 rigid-body motions"});
+  expect_bad_input([&] { iga_check::solve_elasticity(mp, problem); },
+                   {"no boundary", "6 rigid-body motions", "patches 0, 1", "'base', 'free', 'end'"});
   // Without the interface the second box floats: caught per connected part.
   MultiPatch apart = mp;
   apart.interfaces.clear();
@@ -72,11 +75,24 @@ TEST(SolveBadInput, UnknownLabelsAndLabelsWithoutSides) {
   expect_bad_input([&] { iga_check::solve_elasticity(mp, problem); }, {"unknown label 'nowhere'", "base"});
   problem = clamped_pulled();
   problem.pressures.push_back({"missing", 1.0});
-  expect_bad_input([&] { iga_check::solve_elasticity(mp, problem); }, {"--pressure", "'missing'"});
+  expect_bad_input([&] { iga_check::solve_elasticity(mp, problem); }, {"pressure load", "'missing'"});
   problem = clamped_pulled();
   mp.labels.push_back("unused");
   problem.tractions.push_back({"unused", Eigen::Vector3d(1, 0, 0)});
   expect_bad_input([&] { iga_check::solve_elasticity(mp, problem); }, {"'unused'", "no boundary side"});
+}
+
+TEST(SolveBadInput, ErrorsNameTheBoundaryAtFault) {
+  MultiPatch mp = two_boxes();
+  auto problem = clamped_pulled();
+  problem.fixed = {{"base", {{false, false, false}}}};
+  expect_bad_input([&] { iga_check::solve_elasticity(mp, problem); }, {"fixed boundary 'base'", "no displacement component"});
+  problem = clamped_pulled();
+  problem.tractions[0].traction(1) = std::nan("");
+  expect_bad_input([&] { iga_check::solve_elasticity(mp, problem); }, {"traction on 'end'", "not finite"});
+  problem = clamped_pulled();
+  problem.pressures.push_back({"end", std::numeric_limits<double>::infinity()});
+  expect_bad_input([&] { iga_check::solve_elasticity(mp, problem); }, {"pressure on 'end'", "not finite"});
 }
 
 TEST(SolveBadInput, InvalidMaterials) {

@@ -1,0 +1,70 @@
+#include "elasticity_linear_solve.h"
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCholesky>
+#include <sstream>
+#include <string>
+
+#ifdef IGAPREP_HAVE_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
+
+#include "igaprep/core/error.h"
+
+namespace igaprep::iga_check::detail {
+
+namespace {
+
+const char* const kSingular =
+    "the stiffness matrix is not positive definite: the constraints leave a mechanism free "
+    "(e.g. patches that are not connected through interfaces and not fixed) ";
+
+Eigen::VectorXd solve_cholesky(const SparseMatrix& K, const Eigen::VectorXd& F, ElasticityReport& report) {
+#ifdef IGAPREP_HAVE_CHOLMOD
+  Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> chol;
+  report.solver = "cholmod";
+#else
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> chol;
+  report.solver = "simplicial-ldlt";
+#endif
+  chol.compute(K);
+  if (chol.info() != Eigen::Success) throw bad_input(std::string(kSingular) + "(Cholesky factorization failed)");
+#ifndef IGAPREP_HAVE_CHOLMOD
+  if (chol.vectorD().minCoeff() <= 1e-14 * chol.vectorD().cwiseAbs().maxCoeff())
+    throw bad_input(std::string(kSingular) + "(zero or negative pivot)");
+#endif
+  Eigen::VectorXd u = chol.solve(F);
+  if (chol.info() != Eigen::Success || !u.allFinite()) throw bad_input(std::string(kSingular) + "(the solve failed)");
+  return u;
+}
+
+Eigen::VectorXd solve_cg(const SparseMatrix& K, const Eigen::VectorXd& F, const ElasticityOptions& options,
+                         ElasticityReport& report) {
+  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower, Eigen::IncompleteCholesky<double, Eigen::Lower>> cg;
+  report.solver = "cg-ichol";
+  cg.setTolerance(options.cg_tolerance);
+  cg.setMaxIterations(options.cg_max_iterations > 0 ? options.cg_max_iterations : 10 * static_cast<int>(F.size()));
+  cg.compute(K);
+  if (cg.info() != Eigen::Success) throw bad_input(std::string(kSingular) + "(incomplete Cholesky failed)");
+  Eigen::VectorXd u = cg.solve(F);
+  report.cg_iterations = static_cast<int>(cg.iterations());
+  report.cg_residual = cg.error();
+  if (cg.info() != Eigen::Success || !u.allFinite()) {
+    std::ostringstream s;
+    s << "conjugate gradients did not converge in " << cg.iterations() << " iterations (residual " << cg.error()
+      << "); the direct solver (LinearSolver::Cholesky) does not depend on convergence";
+    throw internal_error(s.str());
+  }
+  return u;
+}
+
+}  // namespace
+
+Eigen::VectorXd solve_linear_system(const SparseMatrix& K, const Eigen::VectorXd& F, const ElasticityOptions& options,
+                                    ElasticityReport& report) {
+  if (F.size() == 0) return Eigen::VectorXd::Zero(0);
+  if (options.solver == LinearSolver::Cholesky) return solve_cholesky(K, F, report);
+  return solve_cg(K, F, options, report);
+}
+
+}  // namespace igaprep::iga_check::detail

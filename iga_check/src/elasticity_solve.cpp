@@ -8,7 +8,6 @@
 #include <chrono>
 #include <cmath>
 #include <map>
-#include <numeric>
 #include <sstream>
 
 #ifdef IGAPREP_HAVE_CHOLMOD
@@ -18,6 +17,7 @@
 #include "elasticity_basis.h"
 #include "igaprep/core/error.h"
 #include "igaprep/core/progress.h"
+#include "igaprep/core/union_find.h"
 #include "igaprep/iga_check/elasticity_element.h"
 #include "igaprep/iga_check/elasticity_material.h"
 #include "igaprep/iga_check/elasticity_quadrature.h"
@@ -102,26 +102,21 @@ void check_jacobian(const detail::ElementValues& ev, int patch, double& sign) {
 void check_rigid_modes(const spline::MultiPatch& mp, const spline::GlobalNumbering& num, const Eigen::MatrixXd& X,
                        const std::vector<unsigned char>& fixed) {
   const int np = static_cast<int>(mp.patches.size());
-  std::vector<int> parent(np);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int a) {
-    while (parent[a] != a) a = parent[a] = parent[parent[a]];
-    return a;
-  };
+  UnionFind connected(np);  // patches that share a control point
   std::vector<int> owner(num.count, -1);
   for (int p = 0; p < np; ++p)
     for (int g : num.global[p]) {
       if (owner[g] < 0) owner[g] = p;
-      else parent[find(p)] = find(owner[g]);
+      else connected.unite(p, owner[g]);
     }
-  std::map<int, std::vector<int>> parts;  // root -> patches
-  for (int p = 0; p < np; ++p) parts[find(p)].push_back(p);
+  std::map<int, std::vector<int>> parts;  // root (the part's first patch) -> patches
+  for (int p = 0; p < np; ++p) parts[connected.find(p)].push_back(p);
   static const char* names[6] = {"translation in x", "translation in y", "translation in z",
                                  "rotation about x", "rotation about y", "rotation about z"};
   for (const auto& [root, patches] : parts) {
     std::vector<int> cps;
     for (int g = 0; g < num.count; ++g)
-      if (find(owner[g]) == root) cps.push_back(g);
+      if (connected.find(owner[g]) == root) cps.push_back(g);
     Eigen::Vector3d lo = X.row(cps[0]), hi = lo, c = Eigen::Vector3d::Zero();
     for (int g : cps) {
       lo = lo.cwiseMin(X.row(g).transpose());

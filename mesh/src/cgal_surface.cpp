@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <Eigen/Geometry>
 #include <cstdint>
-#include <numeric>
 #include <unordered_set>
 #include <vector>
 
 #include "igaprep/core/error.h"
+#include "igaprep/core/union_find.h"
 
 namespace igaprep::mesh::detail {
 
@@ -53,20 +53,14 @@ TriMesh from_surface_mesh(const SurfaceMesh& sm) {
 
 SurfaceTopology surface_topology(const TriMesh& mesh) {
   const int nv = static_cast<int>(mesh.V.rows());
-  // Union-find over vertices used by triangles.
-  std::vector<int> parent(nv);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  UnionFind vertex_sets(nv);  // vertices used by triangles, joined along edges
   std::vector<char> used(nv, 0);
   std::unordered_set<std::uint64_t> edges;
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
     for (int c = 0; c < 3; ++c) {
       const int a = mesh.F(f, c), b = mesh.F(f, (c + 1) % 3);
       used[a] = 1;
-      parent[find(a)] = find(b);
+      vertex_sets.unite(a, b);
       const std::uint64_t lo = std::min(a, b), hi = std::max(a, b);
       edges.insert(lo * static_cast<std::uint64_t>(nv) + hi);
     }
@@ -75,7 +69,7 @@ SurfaceTopology surface_topology(const TriMesh& mesh) {
   for (int v = 0; v < nv; ++v) {
     if (!used[v]) continue;
     ++used_vertices;
-    if (find(v) == v) ++components;
+    if (vertex_sets.find(v) == v) ++components;
   }
   const long chi = static_cast<long>(used_vertices) - static_cast<long>(edges.size()) + mesh.F.rows();
   SurfaceTopology t;

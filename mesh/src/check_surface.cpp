@@ -14,6 +14,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include "igaprep/core/error.h"
+#include "igaprep/core/union_find.h"
 #include "igaprep/mesh/read_surface.h"
 
 namespace igaprep::mesh {
@@ -29,16 +30,6 @@ std::string coords(const Eigen::Vector3d& p) {
   std::snprintf(buf, sizeof buf, "(%g, %g, %g)", p.x(), p.y(), p.z());
   return buf;
 }
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  }
-  void unite(int a, int b) { parent[find(a)] = find(b); }
-};
 
 // One side of an undirected edge: the face it belongs to and whether the face
 // runs along it from the smaller vertex to the larger.

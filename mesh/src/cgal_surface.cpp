@@ -6,50 +6,9 @@
 #include <unordered_set>
 #include <vector>
 
-#include "igaprep/core/error.h"
 #include "igaprep/core/union_find.h"
 
 namespace igaprep::mesh::detail {
-
-SurfaceMesh to_surface_mesh(const TriMesh& mesh, const std::string& what) {
-  SurfaceMesh sm;
-  std::vector<SurfaceMesh::Vertex_index> vid(mesh.V.rows());
-  for (Eigen::Index i = 0; i < mesh.V.rows(); ++i) {
-    vid[i] = sm.add_vertex(Point3(mesh.V(i, 0), mesh.V(i, 1), mesh.V(i, 2)));
-  }
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-    for (int c = 0; c < 3; ++c) {
-      if (mesh.F(f, c) < 0 || mesh.F(f, c) >= mesh.V.rows()) {
-        throw bad_input(what + ": triangle " + std::to_string(f) + " has an out-of-range vertex index");
-      }
-    }
-    if (sm.add_face(vid[mesh.F(f, 0)], vid[mesh.F(f, 1)], vid[mesh.F(f, 2)]) == SurfaceMesh::null_face()) {
-      throw bad_input(what + ": triangle " + std::to_string(f) +
-                      " makes the surface non-manifold or inconsistently oriented");
-    }
-  }
-  return sm;
-}
-
-TriMesh from_surface_mesh(const SurfaceMesh& sm) {
-  TriMesh out;
-  std::vector<int> index(sm.number_of_vertices() + sm.number_of_removed_vertices(), -1);
-  out.V.resize(sm.number_of_vertices(), 3);
-  int n = 0;
-  for (auto v : sm.vertices()) {
-    const Point3& p = sm.point(v);
-    out.V.row(n) << p.x(), p.y(), p.z();
-    index[v.idx()] = n++;
-  }
-  out.F.resize(sm.number_of_faces(), 3);
-  int f = 0;
-  for (auto face : sm.faces()) {
-    int c = 0;
-    for (auto v : CGAL::vertices_around_face(sm.halfedge(face), sm)) out.F(f, c++) = index[v.idx()];
-    ++f;
-  }
-  return out;
-}
 
 SurfaceTopology surface_topology(const TriMesh& mesh) {
   const int nv = static_cast<int>(mesh.V.rows());

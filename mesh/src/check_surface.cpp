@@ -9,21 +9,17 @@
 
 #include <Eigen/Geometry>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Surface_mesh.h>
-
 #include "igaprep/core/error.h"
 #include "igaprep/core/union_find.h"
 #include "igaprep/mesh/read_surface.h"
+#include "igaprep/mesh/self_intersections.h"
+#include "igaprep/mesh/to_surface_mesh.h"
 
 namespace igaprep::mesh {
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;  // exact predicates
-using Point = Kernel::Point_3;
-using SurfaceMesh = CGAL::Surface_mesh<Point>;
+using Point = CgalPoint;
 
 std::string coords(const Eigen::Vector3d& p) {
   char buf[96];
@@ -255,20 +251,12 @@ SurfaceReport check_surface(TriMesh& mesh, const std::string& name) {
   // Self-intersections with CGAL (exact predicates). Needs a mesh CGAL can
   // hold: manifold, consistently oriented, without degenerate faces.
   if (r.manifold && r.oriented && repeated + flat == 0) {
-    SurfaceMesh sm;
-    sm.reserve(nv, num_edges, nf);
-    for (int i = 0; i < nv; ++i) sm.add_vertex(Point(V(i, 0), V(i, 1), V(i, 2)));
-    bool built = true;
-    for (int f = 0; f < nf && built; ++f)
-      built = sm.add_face(SurfaceMesh::Vertex_index(F(f, 0)), SurfaceMesh::Vertex_index(F(f, 1)),
-                          SurfaceMesh::Vertex_index(F(f, 2))) != SurfaceMesh::null_face();
-    if (built) {
-      std::vector<std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>> pairs;
-      CGAL::Polygon_mesh_processing::self_intersections(sm, std::back_inserter(pairs));
-      r.self_intersections = static_cast<int>(pairs.size());
-      if (!pairs.empty()) {
-        const int f = static_cast<int>(pairs[0].first.idx()), g = static_cast<int>(pairs[0].second.idx());
-        error(std::to_string(pairs.size()) + " pairs of self-intersecting faces, e.g. faces " + std::to_string(f) +
+    const auto pairs = find_self_intersections(mesh);
+    if (pairs) {
+      r.self_intersections = static_cast<int>(pairs->size());
+      if (!pairs->empty()) {
+        const auto [f, g] = pairs->front();
+        error(std::to_string(pairs->size()) + " pairs of self-intersecting faces, e.g. faces " + std::to_string(f) +
               " and " + std::to_string(g) + " near " + coords((P(F(f, 0)) + P(F(f, 1)) + P(F(f, 2))) / 3.0));
       }
     } else {

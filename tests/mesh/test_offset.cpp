@@ -4,10 +4,8 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/intersection.h>
 #include <CGAL/Side_of_triangle_mesh.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <cmath>
 #include <cstdio>
@@ -20,21 +18,14 @@
 #include "igaprep/mesh/check_surface.h"
 #include "igaprep/mesh/offset_surface.h"
 #include "igaprep/mesh/read_surface.h"
+#include "igaprep/mesh/to_surface_mesh.h"
 #include "igaprep/models/shapes.h"
 
 namespace {
 
 using igaprep::mesh::TriMesh;
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using SM = CGAL::Surface_mesh<K::Point_3>;
-
-SM to_sm(const TriMesh& m) {
-  SM sm;
-  std::vector<SM::Vertex_index> v;
-  for (Eigen::Index i = 0; i < m.V.rows(); ++i) v.push_back(sm.add_vertex(K::Point_3(m.V(i, 0), m.V(i, 1), m.V(i, 2))));
-  for (Eigen::Index f = 0; f < m.F.rows(); ++f) sm.add_face(v[m.F(f, 0)], v[m.F(f, 1)], v[m.F(f, 2)]);
-  return sm;
-}
+using K = igaprep::mesh::CgalKernel;
+using SM = igaprep::mesh::SurfaceMesh;
 
 double volume(const TriMesh& m) {
   double vol = 0;
@@ -114,7 +105,8 @@ TEST(Offset, PelvisCorticalShell) {
   EXPECT_NEAR(mean_edge(inner), mean_edge(outer), 0.35 * mean_edge(outer));
 
   // Nested: every vertex inside the outer surface, and the surfaces do not meet.
-  SM outer_sm = to_sm(outer), inner_sm = to_sm(inner);
+  SM outer_sm = igaprep::mesh::to_surface_mesh(outer, "pelvis"),
+     inner_sm = igaprep::mesh::to_surface_mesh(inner, "pelvis offset");
   CGAL::Side_of_triangle_mesh<SM, K> side(outer_sm);
   int outside = 0;
   for (Eigen::Index i = 0; i < inner.V.rows(); ++i)

@@ -7,6 +7,7 @@
 #include "igaprep/core/error.h"
 #include "igaprep/iga_check/elasticity_quadrature.h"
 #include "igaprep/iga_check/fidelity.h"
+#include "igaprep/mesh/enclosed_volume.h"
 #include "igaprep/spline/curve_surface.h"
 #include "igaprep/spline/evaluate.h"
 #include "igaprep/spline/knot_vector.h"
@@ -31,15 +32,6 @@ void gauss_grid(const std::vector<double>& U, int n, std::vector<double>* pts, s
 }
 
 }  // namespace
-
-double enclosed_volume(const mesh::TriMesh& m) {
-  double v = 0.0;
-  for (int f = 0; f < m.F.rows(); ++f) {
-    const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
-    v += a.dot(b.cross(c));
-  }
-  return v / 6.0;
-}
 
 double winding_number(const mesh::TriMesh& m, const Eigen::Vector3d& x) {
   // Sum of signed solid angles (Van Oosterom & Strackee) over 4 pi.
@@ -162,7 +154,7 @@ TopologyReport topology_checks(const spline::MultiPatch& mp, const std::vector<m
   }
   if (!surfaces.empty()) {
     std::vector<double> enclosed;
-    for (const auto& s : surfaces) enclosed.push_back(std::abs(enclosed_volume(s)));
+    for (const auto& s : surfaces) enclosed.push_back(std::abs(mesh::enclosed_volume(s)));
     for (size_t i = 0; i < surfaces.size(); ++i) {
       RegionVolume rv;
       rv.region = static_cast<int>(i);

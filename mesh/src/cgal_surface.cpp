@@ -37,13 +37,4 @@ SurfaceTopology surface_topology(const TriMesh& mesh) {
   return t;
 }
 
-double enclosed_volume(const TriMesh& mesh) {
-  double vol = 0;
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-    const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
-    vol += a.dot(b.cross(c));
-  }
-  return vol / 6.0;
-}
-
 }  // namespace igaprep::mesh::detail

@@ -18,7 +18,4 @@ struct SurfaceTopology {
 };
 SurfaceTopology surface_topology(const TriMesh& mesh);
 
-// Enclosed volume by the divergence theorem (positive for outward orientation).
-double enclosed_volume(const TriMesh& mesh);
-
 }  // namespace igaprep::mesh::detail

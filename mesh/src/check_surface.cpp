@@ -11,6 +11,7 @@
 
 #include "igaprep/core/error.h"
 #include "igaprep/core/union_find.h"
+#include "igaprep/mesh/enclosed_volume.h"
 #include "igaprep/mesh/read_surface.h"
 #include "igaprep/mesh/self_intersections.h"
 #include "igaprep/mesh/to_surface_mesh.h"
@@ -231,12 +232,7 @@ SurfaceReport check_surface(TriMesh& mesh, const std::string& name) {
     r.genus = r.components - chi / 2;
     // Signed volume per component (about the box centre, for round-off); a
     // component enclosing negative volume faces inward: flip it.
-    const Eigen::Vector3d centre = (r.bbox_min + r.bbox_max) / 2.0;
-    std::vector<double> volume(r.components, 0.0);
-    for (int f = 0; f < nf; ++f) {
-      const Eigen::Vector3d a = P(F(f, 0)) - centre, b = P(F(f, 1)) - centre, c = P(F(f, 2)) - centre;
-      volume[face_component[f]] += a.dot(b.cross(c)) / 6.0;
-    }
+    std::vector<double> volume = enclosed_volumes(mesh, face_component, r.components, (r.bbox_min + r.bbox_max) / 2.0);
     for (int c = 0; c < r.components; ++c)
       if (volume[c] < 0) {
         for (int f = 0; f < nf; ++f)

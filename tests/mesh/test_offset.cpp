@@ -16,6 +16,7 @@
 
 #include "igaprep/core/error.h"
 #include "igaprep/mesh/check_surface.h"
+#include "igaprep/mesh/enclosed_volume.h"
 #include "igaprep/mesh/offset_surface.h"
 #include "igaprep/mesh/read_surface.h"
 #include "igaprep/mesh/to_surface_mesh.h"
@@ -26,15 +27,6 @@ namespace {
 using igaprep::mesh::TriMesh;
 using K = igaprep::mesh::CgalKernel;
 using SM = igaprep::mesh::SurfaceMesh;
-
-double volume(const TriMesh& m) {
-  double vol = 0;
-  for (Eigen::Index f = 0; f < m.F.rows(); ++f) {
-    const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
-    vol += a.dot(b.cross(c)) / 6.0;
-  }
-  return vol;
-}
 
 double mean_edge(const TriMesh& m) {
   double s = 0;
@@ -59,7 +51,7 @@ TEST(Offset, SphereShrinksByD) {
   EXPECT_EQ(report.components, 1);
   EXPECT_EQ(report.self_intersections, 0);
   // Outward orientation: positive enclosed volume close to the ball's.
-  EXPECT_NEAR(volume(inner), 4.0 / 3.0 * M_PI * 0.512, 0.03 * 4.0 / 3.0 * M_PI * 0.512);
+  EXPECT_NEAR(igaprep::mesh::enclosed_volume(inner), 4.0 / 3.0 * M_PI * 0.512, 0.03 * 4.0 / 3.0 * M_PI * 0.512);
   // Similar triangle size (default edge length = the input's mean).
   EXPECT_NEAR(mean_edge(inner), mean_edge(sphere), 0.35 * mean_edge(sphere));
 }
@@ -101,7 +93,7 @@ TEST(Offset, PelvisCorticalShell) {
   EXPECT_EQ(report.self_intersections, 0);
   EXPECT_EQ(report.genus, 2);
   EXPECT_EQ(report.components, 1);
-  EXPECT_GT(volume(inner), 0);
+  EXPECT_GT(igaprep::mesh::enclosed_volume(inner), 0);
   EXPECT_NEAR(mean_edge(inner), mean_edge(outer), 0.35 * mean_edge(outer));
 
   // Nested: every vertex inside the outer surface, and the surfaces do not meet.

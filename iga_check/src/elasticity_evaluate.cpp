@@ -5,7 +5,7 @@
 #include "elasticity_basis.h"
 #include "igaprep/core/error.h"
 #include "igaprep/iga_check/elasticity_material.h"
-#include "igaprep/iga_check/elasticity_quadrature.h"
+#include "igaprep/spline/gauss_legendre.h"
 
 namespace igaprep::iga_check {
 
@@ -80,7 +80,7 @@ ElasticityErrors elasticity_errors(const spline::MultiPatch& mp, const Displacem
     std::array<std::vector<detail::DirElement>, 3> t;
     for (int d = 0; d < 3; ++d) {
       Eigen::VectorXd gp, gw;
-      gauss_legendre(p.degrees[d] + 1 + extra, gp, gw);
+      spline::gauss_legendre(p.degrees[d] + 1 + extra, gp, gw);
       t[d] = detail::direction_elements(p.knots[d], p.degrees[d], gp, gw);
     }
     detail::ElementValues ev;

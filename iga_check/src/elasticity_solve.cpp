@@ -20,9 +20,9 @@
 #include "igaprep/core/union_find.h"
 #include "igaprep/iga_check/elasticity_element.h"
 #include "igaprep/iga_check/elasticity_material.h"
-#include "igaprep/iga_check/elasticity_quadrature.h"
 #include "igaprep/iga_check/elasticity_refine.h"
 #include "igaprep/spline/curve_surface.h"
+#include "igaprep/spline/gauss_legendre.h"
 #include "igaprep/spline/multipatch_topology.h"
 
 namespace igaprep::iga_check {
@@ -68,7 +68,7 @@ const Gauss& gauss(int n) {
   auto it = cache.find(n);
   if (it != cache.end()) return it->second;
   Gauss g;
-  gauss_legendre(n, g.p, g.w);
+  spline::gauss_legendre(n, g.p, g.w);
   return cache.emplace(n, g).first->second;
 }
 

@@ -5,11 +5,11 @@
 #include <string>
 
 #include "igaprep/core/error.h"
-#include "igaprep/iga_check/elasticity_quadrature.h"
 #include "igaprep/iga_check/fidelity.h"
 #include "igaprep/mesh/enclosed_volume.h"
 #include "igaprep/spline/curve_surface.h"
 #include "igaprep/spline/evaluate.h"
+#include "igaprep/spline/gauss_legendre.h"
 #include "igaprep/spline/knot_vector.h"
 #include "igaprep/spline/multipatch_topology.h"
 
@@ -20,7 +20,7 @@ namespace {
 // Gauss points and weights over all elements of a knot vector.
 void gauss_grid(const std::vector<double>& U, int n, std::vector<double>* pts, std::vector<double>* wts) {
   Eigen::VectorXd gp, gw;
-  gauss_legendre(n, gp, gw);
+  spline::gauss_legendre(n, gp, gw);
   const std::vector<double> brk = spline::unique_knots(U);
   for (size_t e = 0; e + 1 < brk.size(); ++e) {
     const double h = brk[e + 1] - brk[e];

@@ -22,7 +22,6 @@
 #include "igaprep/iga_check/elasticity_material.h"
 #include "igaprep/iga_check/elasticity_refine.h"
 #include "igaprep/spline/curve_surface.h"
-#include "igaprep/spline/gauss_legendre.h"
 #include "igaprep/spline/multipatch_topology.h"
 
 namespace igaprep::iga_check {
@@ -58,28 +57,6 @@ std::vector<spline::BoundarySide> sides_with_label(const spline::MultiPatch& mp,
     if (b.label == label) out.push_back(b);
   if (out.empty()) throw bad_input(std::string(what) + ": label '" + name + "' names no boundary side of the model");
   return out;
-}
-
-struct Gauss {
-  Eigen::VectorXd p, w;
-};
-const Gauss& gauss(int n) {
-  static std::map<int, Gauss> cache;
-  auto it = cache.find(n);
-  if (it != cache.end()) return it->second;
-  Gauss g;
-  spline::gauss_legendre(n, g.p, g.w);
-  return cache.emplace(n, g).first->second;
-}
-
-// 1-D element tables of a patch, built once per direction (tensor structure).
-std::array<std::vector<detail::DirElement>, 3> patch_tables(const spline::Patch& p, int extra) {
-  std::array<std::vector<detail::DirElement>, 3> t;
-  for (int d = 0; d < 3; ++d) {
-    const Gauss& g = gauss(p.degrees[d] + 1 + extra);
-    t[d] = detail::direction_elements(p.knots[d], p.degrees[d], g.p, g.w);
-  }
-  return t;
 }
 
 void check_jacobian(const detail::ElementValues& ev, int patch, double& sign) {
@@ -494,7 +471,7 @@ ElasticitySolution solve_elasticity(const spline::MultiPatch& input, const Elast
 
   // 1-D element tables per patch and direction (volume and side quadrature).
   std::vector<std::array<std::vector<detail::DirElement>, 3>> tables(np);
-  for (int p = 0; p < np; ++p) tables[p] = patch_tables(mp.patches[p], options.extra_quadrature);
+  for (int p = 0; p < np; ++p) tables[p] = detail::patch_elements(mp.patches[p], options.extra_quadrature);
 
   // Constraints: the side's control points carry its trace (open knot vectors).
   // Prescribed values first; a FixedSide component then sets its value to zero.

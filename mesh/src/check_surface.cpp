@@ -9,36 +9,24 @@
 
 #include <Eigen/Geometry>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Surface_mesh.h>
-
 #include "igaprep/core/error.h"
+#include "igaprep/core/union_find.h"
+#include "igaprep/mesh/enclosed_volume.h"
 #include "igaprep/mesh/read_surface.h"
+#include "igaprep/mesh/self_intersections.h"
+#include "igaprep/mesh/to_surface_mesh.h"
 
 namespace igaprep::mesh {
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;  // exact predicates
-using Point = Kernel::Point_3;
-using SurfaceMesh = CGAL::Surface_mesh<Point>;
+using Point = CgalPoint;
 
 std::string coords(const Eigen::Vector3d& p) {
   char buf[96];
   std::snprintf(buf, sizeof buf, "(%g, %g, %g)", p.x(), p.y(), p.z());
   return buf;
 }
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  }
-  void unite(int a, int b) { parent[find(a)] = find(b); }
-};
 
 // One side of an undirected edge: the face it belongs to and whether the face
 // runs along it from the smaller vertex to the larger.
@@ -244,12 +232,7 @@ SurfaceReport check_surface(TriMesh& mesh, const std::string& name) {
     r.genus = r.components - chi / 2;
     // Signed volume per component (about the box centre, for round-off); a
     // component enclosing negative volume faces inward: flip it.
-    const Eigen::Vector3d centre = (r.bbox_min + r.bbox_max) / 2.0;
-    std::vector<double> volume(r.components, 0.0);
-    for (int f = 0; f < nf; ++f) {
-      const Eigen::Vector3d a = P(F(f, 0)) - centre, b = P(F(f, 1)) - centre, c = P(F(f, 2)) - centre;
-      volume[face_component[f]] += a.dot(b.cross(c)) / 6.0;
-    }
+    std::vector<double> volume = enclosed_volumes(mesh, face_component, r.components, (r.bbox_min + r.bbox_max) / 2.0);
     for (int c = 0; c < r.components; ++c)
       if (volume[c] < 0) {
         for (int f = 0; f < nf; ++f)
@@ -264,20 +247,12 @@ SurfaceReport check_surface(TriMesh& mesh, const std::string& name) {
   // Self-intersections with CGAL (exact predicates). Needs a mesh CGAL can
   // hold: manifold, consistently oriented, without degenerate faces.
   if (r.manifold && r.oriented && repeated + flat == 0) {
-    SurfaceMesh sm;
-    sm.reserve(nv, num_edges, nf);
-    for (int i = 0; i < nv; ++i) sm.add_vertex(Point(V(i, 0), V(i, 1), V(i, 2)));
-    bool built = true;
-    for (int f = 0; f < nf && built; ++f)
-      built = sm.add_face(SurfaceMesh::Vertex_index(F(f, 0)), SurfaceMesh::Vertex_index(F(f, 1)),
-                          SurfaceMesh::Vertex_index(F(f, 2))) != SurfaceMesh::null_face();
-    if (built) {
-      std::vector<std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>> pairs;
-      CGAL::Polygon_mesh_processing::self_intersections(sm, std::back_inserter(pairs));
-      r.self_intersections = static_cast<int>(pairs.size());
-      if (!pairs.empty()) {
-        const int f = static_cast<int>(pairs[0].first.idx()), g = static_cast<int>(pairs[0].second.idx());
-        error(std::to_string(pairs.size()) + " pairs of self-intersecting faces, e.g. faces " + std::to_string(f) +
+    const auto pairs = find_self_intersections(mesh);
+    if (pairs) {
+      r.self_intersections = static_cast<int>(pairs->size());
+      if (!pairs->empty()) {
+        const auto [f, g] = pairs->front();
+        error(std::to_string(pairs->size()) + " pairs of self-intersecting faces, e.g. faces " + std::to_string(f) +
               " and " + std::to_string(g) + " near " + coords((P(F(f, 0)) + P(F(f, 1)) + P(F(f, 2))) / 3.0));
       }
     } else {

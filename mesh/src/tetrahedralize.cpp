@@ -97,7 +97,7 @@ TetMesh tetrahedralize(const std::vector<TriMesh>& surfaces, const std::vector<T
   std::vector<SurfaceMesh> meshes;
   meshes.reserve(all.size());
   for (std::size_t k = 0; k < all.size(); ++k) {
-    meshes.push_back(detail::to_surface_mesh(*all[k], "tetrahedralize: " + surface_name(static_cast<int>(k))));
+    meshes.push_back(to_surface_mesh(*all[k], "tetrahedralize: " + surface_name(static_cast<int>(k))));
   }
   for (int k = 0; k < n; ++k) {
     if (!CGAL::is_closed(meshes[k])) throw bad_input("tetrahedralize: " + surface_name(k) + " is not closed");

@@ -7,7 +7,6 @@
 #include <cstring>
 #include <cstdint>
 #include <map>
-#include <numeric>
 #include <set>
 #include <sstream>
 #include <unordered_map>
@@ -16,6 +15,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "igaprep/core/error.h"
+#include "igaprep/core/union_find.h"
 
 namespace igaprep::param {
 namespace {
@@ -33,16 +33,6 @@ std::unordered_map<std::uint64_t, std::vector<int>> edge_faces(const Eigen::Matr
     for (int k = 0; k < 3; ++k) map[edge_key(F(f, k), F(f, (k + 1) % 3))].push_back(f);
   return map;
 }
-
-struct UnionFind {
-  std::vector<int> p;
-  explicit UnionFind(int n) : p(static_cast<std::size_t>(n)) { std::iota(p.begin(), p.end(), 0); }
-  int find(int x) {
-    while (p[x] != x) x = p[x] = p[p[x]];
-    return x;
-  }
-  void unite(int a, int b) { p[find(a)] = find(b); }
-};
 
 const char* kAdvice =
     "give a plane ({\"midsurface\": {\"cut\": {\"plane\": {\"point\": [x,y,z], \"normal\": [x,y,z]}}}}) "

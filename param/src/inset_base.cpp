@@ -11,11 +11,8 @@
 
 #include <Eigen/Geometry>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Surface_mesh.h>
-
 #include "igaprep/core/error.h"
+#include "igaprep/mesh/self_intersections.h"
 #include "igaprep/param/base_layout.h"
 #include "igaprep/param/sheet_topology.h"
 
@@ -193,15 +190,8 @@ std::array<bool, 2> on_domain_lines(const RectilinearDomain& D, const Eigen::Vec
 }  // namespace
 
 bool sheet_self_intersects(const mesh::TriMesh& sheet) {
-  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
-  SurfaceMesh sm;
-  for (Eigen::Index v = 0; v < sheet.V.rows(); ++v) sm.add_vertex(Kernel::Point_3(sheet.V(v, 0), sheet.V(v, 1), sheet.V(v, 2)));
-  for (Eigen::Index f = 0; f < sheet.F.rows(); ++f)
-    if (sm.add_face(SurfaceMesh::Vertex_index(sheet.F(f, 0)), SurfaceMesh::Vertex_index(sheet.F(f, 1)),
-                    SurfaceMesh::Vertex_index(sheet.F(f, 2))) == SurfaceMesh::null_face())
-      return false;  // not an oriented 2-manifold: analyze_sheet reports that
-  return CGAL::Polygon_mesh_processing::does_self_intersect(sm);
+  const auto pairs = mesh::find_self_intersections(sheet);
+  return pairs && !pairs->empty();  // undecided (not an oriented 2-manifold): analyze_sheet reports that
 }
 
 InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double inset, int smoothing) {

@@ -10,13 +10,12 @@ namespace {
 
 CheckFigures figures_of(const iga_check::CheckReport& r, const std::vector<mesh::TriMesh>& surfaces) {
   CheckFigures f;
-  for (const auto& p : r.patches) {
-    f.elements += p.elements;
-    f.positive += p.positive;
-    f.negative += p.negative;
-    f.degenerate += p.degenerate;
-    f.undecided += p.undecided;
-  }
+  const iga_check::ElementTotals totals = iga_check::element_totals(r);
+  f.elements = totals.elements;
+  f.positive = totals.positive;
+  f.negative = totals.negative;
+  f.degenerate = totals.degenerate;
+  f.undecided = totals.undecided;
   f.min_scaled_jacobian = r.quality.overall.scaled_jacobian.min;
   for (const auto& s : r.fidelity) {
     const auto& V = surfaces.at(static_cast<std::size_t>(s.surface)).V;

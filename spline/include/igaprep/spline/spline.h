@@ -5,6 +5,7 @@
 #include "igaprep/spline/curve_surface.h"
 #include "igaprep/spline/evaluate.h"
 #include "igaprep/spline/fit.h"
+#include "igaprep/spline/gauss_legendre.h"
 #include "igaprep/spline/knot_removal.h"
 #include "igaprep/spline/knot_vector.h"
 #include "igaprep/spline/multipatch.h"

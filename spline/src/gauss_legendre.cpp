@@ -1,10 +1,10 @@
-#include "igaprep/iga_check/elasticity_quadrature.h"
+#include "igaprep/spline/gauss_legendre.h"
 
 #include <cmath>
 
 #include "igaprep/core/error.h"
 
-namespace igaprep::iga_check {
+namespace igaprep::spline {
 
 void gauss_legendre(int n, Eigen::VectorXd& points, Eigen::VectorXd& weights) {
   if (n < 1 || n > 64) throw internal_error("gauss_legendre: unsupported number of points " + std::to_string(n));
@@ -50,4 +50,4 @@ void gauss_legendre(int n, Eigen::VectorXd& points, Eigen::VectorXd& weights) {
   }
 }
 
-}  // namespace igaprep::iga_check
+}  // namespace igaprep::spline

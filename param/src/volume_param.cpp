@@ -119,10 +119,9 @@ void put_back_on_levels(Eigen::MatrixXd& s, int m, const std::vector<double>& pa
   }
 }
 
-}  // namespace
-
-VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, const BaseLayout& layout,
-                               const std::vector<double>& params, const VolumeParamOptions& options) {
+// The checks of the inputs and options; returns w0, the level of T(n+1).
+double checked_w0(const DecompositionMesh& H, const WField& w, const std::vector<double>& params,
+                  const VolumeParamOptions& options) {
   const int n = H.num_surfaces;
   const int m = static_cast<int>(params.size());
   if (n < 1) throw bad_input("volume parameterization: H has no surface");
@@ -133,39 +132,53 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
   if (!(options.theta > 0.05 && options.theta < 1.5))
     throw bad_input("volume parameterization: theta = " + std::to_string(options.theta) +
                     " is outside (0.05, 1.5) radians");
-  VolumeParam out;
-  out.params = params;
-  out.layers = n;
   const double inner = static_cast<double>(n - 1) / n;
   // Default: midway between Tn and M, and no lower than 0.75 (nearer to T1
   // the streamlines from the core spread more unevenly; measured on torus3).
-  out.w0 = options.w0 < 0.0 ? std::max(0.75, 0.5 * (inner + 1.0)) : options.w0;
-  if (!(out.w0 > inner && out.w0 < 1.0))
-    throw bad_input("volume parameterization: w0 = " + std::to_string(out.w0) + " must lie in (" +
+  const double w0 = options.w0 < 0.0 ? std::max(0.75, 0.5 * (inner + 1.0)) : options.w0;
+  if (!(w0 > inner && w0 < 1.0))
+    throw bad_input("volume parameterization: w0 = " + std::to_string(w0) + " must lie in (" +
                     std::to_string(inner) + ", 1): T(n+1) between Tn and M");
   if (w.w.size() != H.tets.V.rows()) throw bad_input("volume parameterization: the w-field belongs to another mesh");
+  return w0;
+}
 
-  const Eigen::MatrixXd& V = H.tets.V;
-  const Eigen::MatrixXi& T = H.tets.T;
-  const TetTopology topo = build_tet_topology(T, V.rows());
-  const Eigen::MatrixXd grad = vertex_gradients(V, T, w.w);
-  FieldProbe probe(V, T, topo, w.w, grad);
-  if (options.strategy == 1) probe.set_ridge(1.0 - 1e-12);  // its streamlines start next to M
-  const double diag = (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm();
-  const double step = options.ray_step * diag;
-  const RectilinearDomain& D = layout.domain;
-  const double kappa = options.blend * narrowest_band(D);
-  const double cot_theta = 1.0 / std::tan(options.theta);
-  const SheetSampler sheet(layout.sheet, layout.uv);
+// M at (u, v) with its outward lean.
+struct Frame {
+  Eigen::Vector3d position, normal, lean;
+  int triangle;
+  Eigen::Vector3d bary;
+};
+
+// What every step reads: H's w-field and its probe, M's sheet and layout,
+// the sample parameters and the options; and the tet hint threaded through
+// every ray and streamline query in turn (consecutive queries are close).
+struct VolumeContext {
+  VolumeContext(const DecompositionMesh& H, const WField& w, const BaseLayout& layout,
+                const std::vector<double>& params, const VolumeParamOptions& options, double w0)
+      : layout(layout),
+        params(params),
+        options(options),
+        n(H.num_surfaces),
+        m(static_cast<int>(params.size())),
+        inner(static_cast<double>(n - 1) / n),
+        w0(w0),
+        topo(build_tet_topology(H.tets.T, H.tets.V.rows())),
+        grad(vertex_gradients(H.tets.V, H.tets.T, w.w)),
+        probe(H.tets.V, H.tets.T, topo, w.w, grad),
+        diag((H.tets.V.colwise().maxCoeff() - H.tets.V.colwise().minCoeff()).norm()),
+        step(options.ray_step * diag),
+        kappa(options.blend * narrowest_band(layout.domain)),
+        cot_theta(1.0 / std::tan(options.theta)),
+        sheet(layout.sheet, layout.uv),
+        strategy1(options.strategy == 1),
+        offset(2.0 * step) {
+    if (strategy1) probe.set_ridge(1.0 - 1e-12);  // its streamlines start next to M
+  }
 
   // The outward lean at (u, v): M's outward binormals of the domain sides
   // within kappa, weighted by (1 - d/kappa)^2 (1 on the boundary).
-  struct Frame {
-    Eigen::Vector3d position, normal, lean;
-    int triangle;
-    Eigen::Vector3d bary;
-  };
-  auto frame = [&](const Eigen::Vector2d& uv) {
+  Frame frame(const Eigen::Vector2d& uv) const {
     const SheetPoint sp = sheet.at(uv);
     Frame f{sp.position, sp.normal, Eigen::Vector3d::Zero(), sp.triangle, sp.bary};
     for (const DomainEdge& e : layout.domain_edges) {
@@ -181,213 +194,309 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
     // rays would leave M at less than theta (too flat, the lid folds).
     if (f.lean.norm() > 1.0) f.lean.normalize();
     return f;
-  };
-  int hint = -1;  // the tet of the previous query: consecutive queries are close
+  }
+
   // The lid above (side = 1) or below (-1) M: straight along the leaning
   // direction to w = w0 (of the smooth w, FieldProbe::smooth_value).
   // Streamlines of -grad w from M would not cross, but near M's boundary
   // they all bend to the crest.
-  auto ray = [&](const Frame& f, double side) {
+  Eigen::Vector3d ray(const Frame& f, double side) {
     const Eigen::Vector3d dir = (side * f.normal + cot_theta * f.lean).normalized();
-    return probe.ray_to_level(f.position, dir, out.w0, step, 0.5 * diag, &hint);
-  };
+    return probe.ray_to_level(f.position, dir, w0, step, 0.5 * diag, &hint);
+  }
 
-  // Per rectangle: M, the top and the bottom of the core on an m x m grid.
-  struct RectGrid {
-    Grid2 base, top, bottom;    // top, bottom: the lids (strategy 2) or the streamline starts (strategy 1)
-    Grid2 lean;                 // the frame's lean at each sample (the crest's binormal on M's boundary)
-  };
-  const bool strategy1 = options.strategy == 1;
   // Strategy 1 starts its streamlines this far from M along D+ and D-
   // (w = 1 on M: the gradient there is two-sided).
-  const double offset = 2.0 * step;
-  auto start_point = [&](const Frame& f, double side) {
+  Eigen::Vector3d start_point(const Frame& f, double side) const {
     return Eigen::Vector3d(f.position + offset * (side * f.normal + cot_theta * f.lean).normalized());
-  };
-  std::vector<RectGrid> rect(layout.rectangles.size());
-  for (std::size_t r = 0; r < layout.rectangles.size(); ++r) {
-    const Eigen::Vector4d& R = layout.rectangles[r];
+  }
+
+  const BaseLayout& layout;
+  const std::vector<double>& params;
+  const VolumeParamOptions& options;
+  const int n, m;
+  const double inner, w0;
+  const TetTopology topo;
+  const Eigen::MatrixXd grad;
+  FieldProbe probe;
+  const double diag, step, kappa, cot_theta;
+  const SheetSampler sheet;
+  const bool strategy1;
+  const double offset;
+  int hint = -1;
+};
+
+// Per rectangle: M, the top and the bottom of the core on an m x m grid.
+struct RectGrid {
+  Grid2 base, top, bottom;  // top, bottom: the lids (strategy 2) or the streamline starts (strategy 1)
+  Grid2 lean;               // the frame's lean at each sample (the crest's binormal on M's boundary)
+};
+
+std::vector<RectGrid> sample_rectangles(VolumeContext& ctx) {
+  const std::vector<double>& params = ctx.params;
+  const int m = ctx.m;
+  std::vector<RectGrid> rect(ctx.layout.rectangles.size());
+  for (std::size_t r = 0; r < ctx.layout.rectangles.size(); ++r) {
+    const Eigen::Vector4d& R = ctx.layout.rectangles[r];
     RectGrid& g = rect[r];
     for (int j = 0; j < m; ++j)
       for (int i = 0; i < m; ++i) {
         const Eigen::Vector2d uv((1.0 - params[i]) * R(0) + params[i] * R(2), (1.0 - params[j]) * R(1) + params[j] * R(3));
-        const Frame f = frame(uv);
+        const Frame f = ctx.frame(uv);
         g.lean.push_back(f.lean);
         g.base.push_back(f.position);
-        g.top.push_back(strategy1 ? start_point(f, 1.0) : ray(f, 1.0));
-        g.bottom.push_back(strategy1 ? start_point(f, -1.0) : ray(f, -1.0));
+        g.top.push_back(ctx.strategy1 ? ctx.start_point(f, 1.0) : ctx.ray(f, 1.0));
+        g.bottom.push_back(ctx.strategy1 ? ctx.start_point(f, -1.0) : ctx.ray(f, -1.0));
       }
     // The sampled M and lids are piecewise linear with bumps a few samples
     // wide, which the shell's streamlines carry out to T1 and the fit cannot
     // follow. T(n+1) need not be exactly w = w0: only between Tn and M.
-    if (!strategy1 && options.surface_degree > 0)
-      for (Grid2* s : {&g.base, &g.top, &g.bottom}) *s = smooth_grid(*s, params, options.surface_degree);
+    if (!ctx.strategy1 && ctx.options.surface_degree > 0)
+      for (Grid2* s : {&g.base, &g.top, &g.bottom}) *s = smooth_grid(*s, params, ctx.options.surface_degree);
   }
-  // Grid index of position k along side s of a rectangle (box_sides order).
-  auto side_index = [m](int s, int k) {
-    switch (s) {
-      case 0: return k;                      // bottom: j = 0
-      case 1: return (m - 1) + m * k;        // right: i = m - 1
-      case 2: return k + m * (m - 1);        // top: j = m - 1
-      default: return m * k;                 // left: i = 0
-    }
-  };
+  return rect;
+}
 
-  // The faces the shell grows from, each m x m: the outer faces of the core
-  // (strategy 2), or M's two sides and the collapsed crest fans (strategy 1)
-  // with the points the streamlines start from.
-  struct ShellBase {
-    Grid2 face, start;
-    bool collapsed = false;  // the face is a curve (strategy 1 crest)
-    // Strategy 2 crest faces: the shell is ruled across the face's second
-    // direction (j), between the exact streamline surfaces from its two long
-    // edges (S+ or S-, and the one from P2), its rows on T1 and the Ti put
-    // back onto them. The face is thin, and its own streamlines near P2 run
-    // along the ridge of w in M's plane, where the discrete gradient barely
-    // pulls them apart: they bunch up (a sample spacing drops to a tenth of
-    // its neighbours') and the fit folds.
-    bool ruled = false;
-    // Strategy 1 crest fans: ruled in two halves, through the streamline
-    // from this row (along M's binormal) as well; -1: no middle row.
-    int ruled_mid = -1;
-  };
-  std::vector<ShellBase> core_faces;
-  auto add_block = [&](BlockKind kind, int source, int layer, int material, Eigen::MatrixXd samples, int t1_side) {
-    SampledBlock b;
-    b.kind = kind;
-    b.source = source;
-    b.layer = layer;
-    b.material = material;
-    b.samples = std::move(samples);
-    if (t1_side >= 0) b.side_label[static_cast<std::size_t>(t1_side)] = 0;
-    orient_block(b, m);
-    out.folded_cells += b.folded;
-    out.blocks.push_back(std::move(b));
-  };
-  const int core_material = n - 1;
-  const int mid = (m - 1) / 2;
-  if (strategy1) {
-    for (std::size_t r = 0; r < rect.size(); ++r) {
-      core_faces.push_back({rect[r].base, rect[r].top});
-      core_faces.push_back({rect[r].base, rect[r].bottom});
-    }
-    for (std::size_t c = 0; c < layout.crests.size(); ++c) {
-      const CrestSegment& seg = layout.crests[c];
-      const RectGrid& g = rect[static_cast<std::size_t>(seg.rectangle)];
-      ShellBase fan;
-      fan.collapsed = true;
-      fan.ruled = true;
-      fan.ruled_mid = mid;
-      for (int j = 0; j < m; ++j)
-        for (int k = 0; k < m; ++k) {
-          const int q = side_index(seg.side, k);
-          fan.face.push_back(g.base[q]);
-          // The fan from D+ through the binormal (the middle row) to D-: only
-          // those three rows are traced, the others are ruled between them.
-          fan.start.push_back(j == mid ? Eigen::Vector3d(g.base[q] + offset * g.lean[q].normalized())
-                                       : lerp(g.top[q], g.bottom[q], params[j]));
-        }
-      core_faces.push_back(std::move(fan));
-    }
+// Grid index of position k along side s of a rectangle (box_sides order).
+int side_index(int m, int s, int k) {
+  switch (s) {
+    case 0: return k;                // bottom: j = 0
+    case 1: return (m - 1) + m * k;  // right: i = m - 1
+    case 2: return k + m * (m - 1);  // top: j = m - 1
+    default: return m * k;           // left: i = 0
   }
-  for (std::size_t r = 0; r < rect.size() && !strategy1; ++r) {
+}
+
+// The faces the shell grows from, each m x m: the outer faces of the core
+// (strategy 2), or M's two sides and the collapsed crest fans (strategy 1)
+// with the points the streamlines start from.
+struct ShellBase {
+  Grid2 face, start;
+  bool collapsed = false;  // the face is a curve (strategy 1 crest)
+  // Strategy 2 crest faces: the shell is ruled across the face's second
+  // direction (j), between the exact streamline surfaces from its two long
+  // edges (S+ or S-, and the one from P2), its rows on T1 and the Ti put
+  // back onto them. The face is thin, and its own streamlines near P2 run
+  // along the ridge of w in M's plane, where the discrete gradient barely
+  // pulls them apart: they bunch up (a sample spacing drops to a tenth of
+  // its neighbours') and the fit folds.
+  bool ruled = false;
+  // Strategy 1 crest fans: ruled in two halves, through the streamline
+  // from this row (along M's binormal) as well; -1: no middle row.
+  int ruled_mid = -1;
+};
+
+void add_block(VolumeParam& out, int m, BlockKind kind, int source, int layer, int material, Eigen::MatrixXd samples,
+               int t1_side) {
+  SampledBlock b;
+  b.kind = kind;
+  b.source = source;
+  b.layer = layer;
+  b.material = material;
+  b.samples = std::move(samples);
+  if (t1_side >= 0) b.side_label[static_cast<std::size_t>(t1_side)] = 0;
+  orient_block(b, m);
+  out.folded_cells += b.folded;
+  out.blocks.push_back(std::move(b));
+}
+
+// Strategy 1: the shell grows from both sides of M and from a fan per crest
+// segment, from D+ through the binormal (the middle row) to D-: only those
+// three rows are traced, the others are ruled between them.
+void add_strategy1_bases(const VolumeContext& ctx, const std::vector<RectGrid>& rect, std::vector<ShellBase>& faces) {
+  const int m = ctx.m;
+  const int mid = (m - 1) / 2;
+  for (std::size_t r = 0; r < rect.size(); ++r) {
+    faces.push_back({rect[r].base, rect[r].top});
+    faces.push_back({rect[r].base, rect[r].bottom});
+  }
+  for (std::size_t c = 0; c < ctx.layout.crests.size(); ++c) {
+    const CrestSegment& seg = ctx.layout.crests[c];
+    const RectGrid& g = rect[static_cast<std::size_t>(seg.rectangle)];
+    ShellBase fan;
+    fan.collapsed = true;
+    fan.ruled = true;
+    fan.ruled_mid = mid;
+    for (int j = 0; j < m; ++j)
+      for (int k = 0; k < m; ++k) {
+        const int q = side_index(m, seg.side, k);
+        fan.face.push_back(g.base[q]);
+        fan.start.push_back(j == mid ? Eigen::Vector3d(g.base[q] + ctx.offset * g.lean[q].normalized())
+                                     : lerp(g.top[q], g.bottom[q], ctx.params[j]));
+      }
+    faces.push_back(std::move(fan));
+  }
+}
+
+// Strategy 2: per rectangle a block ruled from M to its top lid and one to
+// its bottom lid; the lids are faces the shell grows from.
+void add_core_blocks(const VolumeContext& ctx, const std::vector<RectGrid>& rect, VolumeParam& out,
+                     std::vector<ShellBase>& faces) {
+  const int m = ctx.m;
+  for (std::size_t r = 0; r < rect.size(); ++r) {
     for (const bool top : {true, false}) {
       Eigen::MatrixXd s(m * m * m, 3);
       const Grid2& lid = top ? rect[r].top : rect[r].bottom;
       for (int k = 0; k < m; ++k)
-        for (int q = 0; q < m * m; ++q) s.row(q + m * m * k) = lerp(rect[r].base[q], lid[q], params[k]).transpose();
-      add_block(top ? BlockKind::CoreTop : BlockKind::CoreBottom, static_cast<int>(r), 0, core_material, std::move(s), -1);
-      core_faces.push_back({lid, lid});
+        for (int q = 0; q < m * m; ++q) s.row(q + m * m * k) = lerp(rect[r].base[q], lid[q], ctx.params[k]).transpose();
+      add_block(out, m, top ? BlockKind::CoreTop : BlockKind::CoreBottom, static_cast<int>(r), 0, ctx.n - 1,
+                std::move(s), -1);
+      faces.push_back({lid, lid});
     }
   }
-  for (std::size_t c = 0; c < layout.crests.size() && !strategy1; ++c) {
-    const CrestSegment& seg = layout.crests[c];
-    const RectGrid& g = rect[static_cast<std::size_t>(seg.rectangle)];
-    Grid2 P0(m), P1(m), P2(m), P3(m);
-    for (int k = 0; k < m; ++k) {
-      const int q = side_index(seg.side, k);
-      P0[k] = g.base[q];
-      P3[k] = g.top[q];
-      P1[k] = g.bottom[q];
-      if (g.lean[q].norm() == 0.0) throw internal_error("volume parameterization: no binormal on M's boundary");
-      // P2 out along the binormal, so that the crest's cross-section is
-      // close to a kite with right angles at P3 and P1 (crest_reach = 1),
-      // but no farther than the level halfway between Tn and T(n+1).
-      const Eigen::Vector3d b = g.lean[q].normalized();
-      const double r3 = 0.5 * ((P3[k] - P0[k]).norm() + (P1[k] - P0[k]).norm());
-      const double kite = options.crest_reach * r3 / std::cos(options.theta);
-      const Eigen::Vector3d limit = probe.ray_to_level(P0[k], b, 0.5 * (inner + out.w0), step, 0.5 * diag, &hint);
-      P2[k] = P0[k] + std::min(kite, (limit - P0[k]).norm()) * b;
-    }
-    // The lids' edges P3 and P1 are smooth; P2 follows the ray limits, which
-    // are not (the crest is thin: a bump folds it).
-    if (options.surface_degree > 0) P2 = smooth_polyline(P2, params, options.surface_degree);
+}
+
+// The corners of a crest's cross-section along its segment: P0 on M's
+// boundary, P3 and P1 the top and bottom lids' edges, P2 out along M's binormal.
+struct CrestProfile {
+  Grid2 P0, P1, P2, P3;
+};
+
+CrestProfile crest_profile(VolumeContext& ctx, const CrestSegment& seg, const RectGrid& g) {
+  const int m = ctx.m;
+  CrestProfile c{Grid2(m), Grid2(m), Grid2(m), Grid2(m)};
+  for (int k = 0; k < m; ++k) {
+    const int q = side_index(m, seg.side, k);
+    c.P0[k] = g.base[q];
+    c.P3[k] = g.top[q];
+    c.P1[k] = g.bottom[q];
+    if (g.lean[q].norm() == 0.0) throw internal_error("volume parameterization: no binormal on M's boundary");
+    // P2 out along the binormal, so that the crest's cross-section is
+    // close to a kite with right angles at P3 and P1 (crest_reach = 1),
+    // but no farther than the level halfway between Tn and T(n+1).
+    const Eigen::Vector3d b = g.lean[q].normalized();
+    const double r3 = 0.5 * ((c.P3[k] - c.P0[k]).norm() + (c.P1[k] - c.P0[k]).norm());
+    const double kite = ctx.options.crest_reach * r3 / std::cos(ctx.options.theta);
+    const Eigen::Vector3d limit =
+        ctx.probe.ray_to_level(c.P0[k], b, 0.5 * (ctx.inner + ctx.w0), ctx.step, 0.5 * ctx.diag, &ctx.hint);
+    c.P2[k] = c.P0[k] + std::min(kite, (limit - c.P0[k]).norm()) * b;
+  }
+  // The lids' edges P3 and P1 are smooth; P2 follows the ray limits, which
+  // are not (the crest is thin: a bump folds it).
+  if (ctx.options.surface_degree > 0) c.P2 = smooth_polyline(c.P2, ctx.params, ctx.options.surface_degree);
+  return c;
+}
+
+// Strategy 2: per crest segment a block bilinear in its cross-section
+// (P0, P3, P2, P1); its two outer faces (P3-P2 and P1-P2) are faces the
+// shell grows from, ruled across.
+void add_crest_blocks(VolumeContext& ctx, const std::vector<RectGrid>& rect, VolumeParam& out,
+                      std::vector<ShellBase>& faces) {
+  const int m = ctx.m;
+  const std::vector<double>& params = ctx.params;
+  for (std::size_t c = 0; c < ctx.layout.crests.size(); ++c) {
+    const CrestSegment& seg = ctx.layout.crests[c];
+    const CrestProfile P = crest_profile(ctx, seg, rect[static_cast<std::size_t>(seg.rectangle)]);
     Eigen::MatrixXd s(m * m * m, 3);
     Grid2 upper(m * m), lower(m * m);
     for (int b = 0; b < m; ++b)
       for (int a = 0; a < m; ++a)
         for (int k = 0; k < m; ++k)
-          s.row(k + m * (a + m * b)) =
-              ((1.0 - params[b]) * lerp(P0[k], P3[k], params[a]) + params[b] * lerp(P1[k], P2[k], params[a])).transpose();
+          s.row(k + m * (a + m * b)) = ((1.0 - params[b]) * lerp(P.P0[k], P.P3[k], params[a]) +
+                                        params[b] * lerp(P.P1[k], P.P2[k], params[a]))
+                                           .transpose();
     for (int j = 0; j < m; ++j)
       for (int k = 0; k < m; ++k) {
-        upper[k + m * j] = lerp(P3[k], P2[k], params[j]);  // the a = 1 face, (tau, b)
-        lower[k + m * j] = lerp(P1[k], P2[k], params[j]);  // the b = 1 face, (tau, a)
+        upper[k + m * j] = lerp(P.P3[k], P.P2[k], params[j]);  // the a = 1 face, (tau, b)
+        lower[k + m * j] = lerp(P.P1[k], P.P2[k], params[j]);  // the b = 1 face, (tau, a)
       }
-    add_block(BlockKind::Crest, static_cast<int>(c), 0, core_material, std::move(s), -1);
-    core_faces.push_back({upper, upper, false, true});  // ruled
-    core_faces.push_back({lower, lower, false, true});
+    add_block(out, m, BlockKind::Crest, static_cast<int>(c), 0, ctx.n - 1, std::move(s), -1);
+    faces.push_back({upper, upper, false, true});  // ruled
+    faces.push_back({lower, lower, false, true});
   }
-  out.rectangles = static_cast<int>(layout.rectangles.size());
-  out.crests = static_cast<int>(layout.crests.size());
-  out.core_faces = static_cast<int>(core_faces.size());
+}
 
-  // Shell: streamlines from every sample of every outer core face, cut at the layers' w-levels.
+// A ruled face needs the columns of its rows j = 0, m - 1 (and the middle one) only.
+bool traced(const ShellBase& face, int m, int q) {
+  const int j = q / m;
+  return !face.ruled || j == 0 || j == m - 1 || j == face.ruled_mid;
+}
+
+// The streamline of -grad w from every traced sample of the face.
+std::vector<StreamlineColumn> trace_face_columns(VolumeContext& ctx, const ShellBase& face, int& streamlines) {
+  const int m = ctx.m;
+  std::vector<StreamlineColumn> cols(static_cast<std::size_t>(m * m));
+  for (int q = 0; q < m * m; ++q)
+    if (traced(face, m, q)) {
+      cols[static_cast<std::size_t>(q)] =
+          trace_column(ctx.probe, face.start[static_cast<std::size_t>(q)], ctx.options.stream_step * ctx.diag, &ctx.hint);
+      ++streamlines;
+    }
+  return cols;
+}
+
+// The samples of a face's shell block in layer (1..n): the traced columns cut
+// at the layer's w-levels, w in [(layer - 1)/n, layer/n] (the innermost one
+// up to the face itself); the untraced rows of a ruled face are left for rule_rows.
+Eigen::MatrixXd layer_samples(const VolumeContext& ctx, const ShellBase& face,
+                              const std::vector<StreamlineColumn>& cols, int layer) {
+  const int m = ctx.m, n = ctx.n;
+  const double lo = static_cast<double>(layer - 1) / n;
+  Eigen::MatrixXd s(m * m * m, 3);
+  for (int q = 0; q < m * m; ++q) {
+    if (!traced(face, m, q)) continue;
+    const StreamlineColumn& col = cols[static_cast<std::size_t>(q)];
+    // Arc lengths of the layer's outer (w = lo) and inner ends; the inner
+    // end of the innermost layer is the core face itself (arc 0).
+    const double s_lo = col.arc_at_level(lo);
+    const double s_hi = layer == n ? 0.0 : col.arc_at_level(static_cast<double>(layer) / n);
+    for (int k = 0; k < m; ++k) {
+      Eigen::Vector3d x;
+      if (k == 0) x = col.at_arc(s_lo);
+      else if (k == m - 1) x = layer == n ? face.face[static_cast<std::size_t>(q)] : col.at_arc(s_hi);
+      else x = col.at_arc(s_lo + ctx.params[k] * (s_hi - s_lo));
+      s.row(q + m * m * k) = x.transpose();
+    }
+  }
+  return s;
+}
+
+// Shell: streamlines from every sample of every face, one block per face and
+// material layer; the layer-1 block's side w0 (side 4) lies on T1.
+void add_shell_blocks(VolumeContext& ctx, const DecompositionMesh& H, const std::vector<ShellBase>& faces,
+                      VolumeParam& out) {
+  const int m = ctx.m, n = ctx.n;
   const std::vector<SurfaceProjector> surface = surface_projectors(H);  // T1..Tn
-  Progress progress("streamlines", core_faces.size(), options.progress);
-  for (std::size_t f = 0; f < core_faces.size(); ++f) {
-    const ShellBase& face = core_faces[f];
-    // A ruled face needs the columns of its rows j = 0, m - 1 (and the middle one) only.
-    auto traced = [&](int q) {
-      const int j = q / m;
-      return !face.ruled || j == 0 || j == m - 1 || j == face.ruled_mid;
-    };
-    std::vector<StreamlineColumn> cols(static_cast<std::size_t>(m * m));
-    for (int q = 0; q < m * m; ++q)
-      if (traced(q)) {
-        cols[static_cast<std::size_t>(q)] =
-            trace_column(probe, face.start[static_cast<std::size_t>(q)], options.stream_step * diag, &hint);
-        ++out.streamlines;
-      }
+  Progress progress("streamlines", faces.size(), ctx.options.progress);
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const ShellBase& face = faces[f];
+    const std::vector<StreamlineColumn> cols = trace_face_columns(ctx, face, out.streamlines);
     for (int layer = 1; layer <= n; ++layer) {
-      const double lo = static_cast<double>(layer - 1) / n;
-      Eigen::MatrixXd s(m * m * m, 3);
-      for (int q = 0; q < m * m; ++q) {
-        if (!traced(q)) continue;
-        const StreamlineColumn& col = cols[static_cast<std::size_t>(q)];
-        // Arc lengths of the layer's outer (w = lo) and inner ends; the inner
-        // end of the innermost layer is the core face itself (arc 0).
-        const double s_lo = col.arc_at_level(lo);
-        const double s_hi = layer == n ? 0.0 : col.arc_at_level(static_cast<double>(layer) / n);
-        for (int k = 0; k < m; ++k) {
-          Eigen::Vector3d x;
-          if (k == 0) x = col.at_arc(s_lo);
-          else if (k == m - 1) x = layer == n ? face.face[static_cast<std::size_t>(q)] : col.at_arc(s_hi);
-          else x = col.at_arc(s_lo + params[k] * (s_hi - s_lo));
-          s.row(q + m * m * k) = x.transpose();
-        }
-      }
+      Eigen::MatrixXd s = layer_samples(ctx, face, cols, layer);
       if (face.ruled) {
-        rule_rows(s, m, params, face.ruled_mid);
+        rule_rows(s, m, ctx.params, face.ruled_mid);
         const SurfaceProjector* inner = layer < n ? &surface[static_cast<std::size_t>(layer)] : nullptr;
-        put_back_on_levels(s, m, params, face.ruled_mid, surface[static_cast<std::size_t>(layer - 1)], inner);
+        put_back_on_levels(s, m, ctx.params, face.ruled_mid, surface[static_cast<std::size_t>(layer - 1)], inner);
       }
-      add_block(BlockKind::Shell, static_cast<int>(f), layer, layer - 1, std::move(s), layer == 1 ? 4 : -1);
+      add_block(out, m, BlockKind::Shell, static_cast<int>(f), layer, layer - 1, std::move(s), layer == 1 ? 4 : -1);
       if (layer == n && face.collapsed) out.blocks.back().collapsed[5] = true;
     }
     progress.update(f + 1);
   }
   progress.finish();
+}
+
+}  // namespace
+
+VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, const BaseLayout& layout,
+                               const std::vector<double>& params, const VolumeParamOptions& options) {
+  VolumeParam out;
+  out.w0 = checked_w0(H, w, params, options);
+  out.params = params;
+  out.layers = H.num_surfaces;
+  VolumeContext ctx(H, w, layout, params, options, out.w0);
+  const std::vector<RectGrid> rect = sample_rectangles(ctx);
+  std::vector<ShellBase> faces;
+  if (ctx.strategy1) {
+    add_strategy1_bases(ctx, rect, faces);
+  } else {
+    add_core_blocks(ctx, rect, out, faces);
+    add_crest_blocks(ctx, rect, out, faces);
+  }
+  out.rectangles = static_cast<int>(layout.rectangles.size());
+  out.crests = static_cast<int>(layout.crests.size());
+  out.core_faces = static_cast<int>(faces.size());
+  add_shell_blocks(ctx, H, faces, out);
   return out;
 }
 

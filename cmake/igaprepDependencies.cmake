@@ -22,17 +22,6 @@ if(NOT TARGET igaprep_dep_tetgen)
     INTERFACE_COMPILE_DEFINITIONS TETLIBRARY)
 endif()
 
-# OpenSubdiv 3.5 (libosd-dev): Debian's OpenSubdivConfig.cmake names static
-# libraries that are not installed, so find the shared CPU library by hand.
-if(NOT TARGET igaprep_dep_osd)
-  find_path(IGAPREP_OSD_INCLUDE_DIR opensubdiv/far/topologyRefiner.h REQUIRED)
-  find_library(IGAPREP_OSD_LIBRARY NAMES osdCPU REQUIRED)
-  add_library(igaprep_dep_osd INTERFACE IMPORTED)
-  set_target_properties(igaprep_dep_osd PROPERTIES
-    INTERFACE_INCLUDE_DIRECTORIES "${IGAPREP_OSD_INCLUDE_DIR}"
-    INTERFACE_LINK_LIBRARIES "${IGAPREP_OSD_LIBRARY}")
-endif()
-
 # HDF5 C and C++ (serial) as one target.
 if(NOT TARGET igaprep_dep_hdf5)
   add_library(igaprep_dep_hdf5 INTERFACE IMPORTED)

@@ -9,7 +9,7 @@ find_dependency(CGAL)
 if(NOT CMAKE_C_COMPILER_LOADED)
   enable_language(C)
 endif()
-find_dependency(HDF5 COMPONENTS C CXX)
+find_dependency(HDF5 COMPONENTS C)
 
 # TetGen (libtet1.5-dev): header tetgen.h, library libtet.so, needs TETLIBRARY.
 if(NOT TARGET igaprep_dep_tetgen)
@@ -22,12 +22,13 @@ if(NOT TARGET igaprep_dep_tetgen)
     INTERFACE_COMPILE_DEFINITIONS TETLIBRARY)
 endif()
 
-# HDF5 C and C++ (serial) as one target.
+# HDF5 (serial), its C API only: export/ calls H5F/H5G/H5D/H5A directly
+# (export/src/hdf5_handle.h), not the C++ wrapper.
 if(NOT TARGET igaprep_dep_hdf5)
   add_library(igaprep_dep_hdf5 INTERFACE IMPORTED)
   set_target_properties(igaprep_dep_hdf5 PROPERTIES
     INTERFACE_INCLUDE_DIRECTORIES "${HDF5_INCLUDE_DIRS}"
-    INTERFACE_LINK_LIBRARIES "${HDF5_CXX_LIBRARIES};${HDF5_LIBRARIES}")
+    INTERFACE_LINK_LIBRARIES "${HDF5_C_LIBRARIES}")
 endif()
 
 # CHOLMOD (libsuitesparse-dev) is optional: Eigen's simplicial LDLT otherwise.

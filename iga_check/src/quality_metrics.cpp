@@ -13,12 +13,6 @@
 
 namespace igaprep::iga_check {
 
-double scaled_jacobian(const Eigen::Matrix3d& J) {
-  const double n = J.col(0).norm() * J.col(1).norm() * J.col(2).norm();
-  if (!(n > 0.0)) return 0.0;
-  return J.determinant() / n;
-}
-
 double condition_number(const Eigen::Matrix3d& J) {
   const double det = J.determinant();
   const double fro = J.norm();

@@ -189,9 +189,12 @@ std::array<bool, 2> on_domain_lines(const RectilinearDomain& D, const Eigen::Vec
 
 }  // namespace
 
-bool sheet_self_intersects(const mesh::TriMesh& sheet) {
+bool sheet_self_intersects(const mesh::TriMesh& sheet, const std::string& name) {
   const auto pairs = mesh::find_self_intersections(sheet);
-  return pairs && !pairs->empty();  // undecided (not an oriented 2-manifold): analyze_sheet reports that
+  if (!pairs)
+    throw bad_input(name + ": cannot tell whether it intersects itself: it is not an oriented 2-manifold "
+                           "(non-manifold, inconsistently oriented or a bad vertex index)");
+  return !pairs->empty();
 }
 
 InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double inset, int smoothing) {
@@ -282,6 +285,12 @@ InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polyc
     const auto on = on_domain_lines(out.domain, uv.row(v).transpose());
     corner[static_cast<std::size_t>(v)] = on[0] && on[1];
   }
+  // The sheet's connectivity is final here (smoothing moves vertices only):
+  // one oriented sheet with a boundary loop per domain boundary, else no M.
+  // This also lets the self-intersection test below always decide.
+  const std::string name = "the inset base surface (d = " + std::to_string(d) + ")";
+  const std::string problem = describe_sheet_problem(analyze_sheet(F, V.rows()), static_cast<int>(D.holes.size()) + 1, name);
+  if (!problem.empty()) throw check_failed(problem);
   // Smoothing moves vertices along their normals; where M0trim folds sharply
   // that can make M cross itself (the genus-3 torus of ../shared/models at 5
   // rounds), which H cannot embed: then fewer rounds, down to none.
@@ -290,12 +299,9 @@ InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polyc
     out.mesh = unsmoothed;
     smooth_sheet(out.mesh, corner, rounds);
     out.smoothing = rounds;
-    if (rounds == 0 || !sheet_self_intersects(out.mesh)) break;
+    if (rounds == 0 || !sheet_self_intersects(out.mesh, name + " after " + std::to_string(rounds) + " smoothing rounds"))
+      break;
   }
-  const SheetTopology topo = analyze_sheet(F, V.rows());
-  const std::string problem =
-      describe_sheet_problem(topo, static_cast<int>(D.holes.size()) + 1, "the inset base surface (d = " + std::to_string(d) + ")");
-  if (!problem.empty()) throw check_failed(problem);
   return out;
 }
 

@@ -262,15 +262,30 @@ TEST(SmoothSheet, FlattensBumpsKeepsFixedAndPlanar) {
 // overlap others) it does.
 TEST(SheetSelfIntersects, PlanarGridAndFoldedGrids) {
   const mesh::TriMesh flat = param_test::square_tris(6);
-  EXPECT_FALSE(sheet_self_intersects(flat));
+  EXPECT_FALSE(sheet_self_intersects(flat, "flat"));
   const Eigen::Index centre = 3 + 7 * 3;
   ASSERT_EQ(flat.V.row(centre), Eigen::RowVector3d(0.5, 0.5, 0.0));
   mesh::TriMesh dragged = flat;
   dragged.V.row(centre) << 0.9, 0.1, 0.0;
-  EXPECT_TRUE(sheet_self_intersects(dragged));
+  EXPECT_TRUE(sheet_self_intersects(dragged, "dragged"));
   mesh::TriMesh lifted = flat;
   lifted.V.row(centre) << 0.5, 0.5, 0.3;  // a bump: still no crossing
-  EXPECT_FALSE(sheet_self_intersects(lifted));
+  EXPECT_FALSE(sheet_self_intersects(lifted, "lifted"));
+}
+
+// A sheet CGAL cannot hold (one triangle flipped against its neighbours) is
+// not reported as free of intersections: the question is refused, by name.
+TEST(SheetSelfIntersects, UndecidedIsAnError) {
+  mesh::TriMesh flipped = param_test::square_tris(6);
+  std::swap(flipped.F(7, 1), flipped.F(7, 2));
+  try {
+    sheet_self_intersects(flipped, "flipped sheet");
+    FAIL() << "no error for a sheet that is not an oriented 2-manifold";
+  } catch (const igaprep::Error& e) {
+    EXPECT_EQ(e.kind(), igaprep::ErrorKind::BadInput);
+    EXPECT_NE(std::string(e.what()).find("flipped sheet: cannot tell whether it intersects itself"), std::string::npos)
+        << e.what();
+  }
 }
 
 // ---------------------------------------------------------------- narrowest_band, inset_base_surface

@@ -6,6 +6,7 @@
 // boundary has real corners where the domain has them: a smooth boundary with
 // marked corners (the b-field M) makes the volume patches above and below M
 // flat (180 degrees) at those corners, a zero scaled Jacobian.
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -24,10 +25,11 @@ struct InsetBase {
   int smoothing = 0;           // smoothing rounds used: fewer than asked where more made M intersect itself
 };
 
-// Whether a triangle sheet crosses itself (CGAL, exact predicates; triangles
-// that share a vertex or an edge only do not count). False when the sheet is
-// not an oriented 2-manifold (CGAL cannot hold it; the sheet checks say so).
-bool sheet_self_intersects(const mesh::TriMesh& sheet);
+// Whether a triangle sheet crosses itself (mesh::find_self_intersections:
+// exact predicates; triangles that share a vertex or an edge only do not
+// count). Throws Error(BadInput) starting with `name` when that cannot be
+// decided: the sheet is not an oriented 2-manifold (analyze_sheet says how).
+bool sheet_self_intersects(const mesh::TriMesh& sheet, const std::string& name);
 
 // Inputs: a sheet and its (u, v), a value c, the axis (0: u, 1: v). Splits
 // every triangle that the line uv(axis) = c crosses (orientation kept; new

@@ -11,3 +11,4 @@
 #include "igaprep/spline/multipatch.h"
 #include "igaprep/spline/multipatch_topology.h"
 #include "igaprep/spline/refine.h"
+#include "igaprep/spline/scaled_jacobian.h"

@@ -33,7 +33,7 @@ void add_offset_command(CLI::App& app) {
     } catch (const Error& e) {
       throw Error(e.kind(), args->input + ": " + e.what());  // name the file at fault
     }
-    mesh::SurfaceReport report = mesh::check_surface(inner, args->output);
+    mesh::SurfaceReport report = mesh::check_and_repair_surface(inner, args->output);
     if (!report.ok()) throw internal_error("the offset surface is defective: " + report.errors.front());
     mesh::write_surface(args->output, inner);
     std::cout << "offset: " << inner.V.rows() << " vertices, " << inner.F.rows() << " faces, genus " << report.genus

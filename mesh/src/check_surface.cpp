@@ -357,8 +357,6 @@ SurfaceReport check_and_repair_surface(TriMesh& mesh, const std::string& name) {
   return r;
 }
 
-SurfaceReport check_surface(TriMesh& mesh, const std::string& name) { return check_and_repair_surface(mesh, name); }
-
 TriMesh load_checked_surface(const std::string& path, SurfaceReport* report) {
   TriMesh mesh = read_surface(path);
   SurfaceReport r = check_and_repair_surface(mesh, path);

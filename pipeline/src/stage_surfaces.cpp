@@ -30,7 +30,7 @@ Surfaces load_surfaces(const Case& c) {
       m = mesh::read_surface(s.file);
       name = s.file;
     }
-    mesh::SurfaceReport report = mesh::check_surface(m, name);
+    mesh::SurfaceReport report = mesh::check_and_repair_surface(m, name);
     for (const auto& e : report.errors) errors += "\n  " + e;
     out.meshes.push_back(std::move(m));
     out.reports.push_back(std::move(report));

@@ -96,7 +96,7 @@ py::dict check(const spline::MultiPatch& model, const std::vector<std::pair<Eige
 }
 
 py::dict surface_report(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const std::string& name) {
-  mesh::TriMesh m = tri_mesh(V, F);
+  const mesh::TriMesh m = tri_mesh(V, F);
   const mesh::SurfaceReport r = mesh::check_surface(m, name);
   return py::dict(py::arg("ok") = r.ok(), py::arg("errors") = r.errors, py::arg("vertices") = r.vertices,
                   py::arg("faces") = r.faces, py::arg("genus") = r.genus, py::arg("volume") = r.volume,

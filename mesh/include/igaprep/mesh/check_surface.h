@@ -47,11 +47,6 @@ SurfaceReport check_surface(const TriMesh& mesh, const std::string& name);
 // ("...; re-oriented outward", "... were removed").
 SurfaceReport check_and_repair_surface(TriMesh& mesh, const std::string& name);
 
-// The former name of check_and_repair_surface, kept until cli/ calls it by
-// that name. A non-const mesh binds here: new code calls check_surface on a
-// const mesh, or check_and_repair_surface.
-SurfaceReport check_surface(TriMesh& mesh, const std::string& name);
-
 // Reads `path` (read_surface) and checks and repairs it
 // (check_and_repair_surface, named by `path`).
 // Output: the checked (possibly re-oriented) mesh; *report when given.

@@ -131,25 +131,23 @@ TEST(PipelineModels, Sphere2MeetsEveryCriterionAndWritesItsOutputs) {
   EXPECT_EQ(inputs.at("date").get<std::string>().size(), 20u);  // 2026-12-01T20:00:00Z
 }
 
-TEST(PipelineModels, Ring2MeetsEveryCriterion) {
+// A built-in model's committed case, run without writing: certified with
+// min scaled Jacobian >= 0.2, its layout's counts, optimize_jacobians' raise
+// from below `fitted_below`.
+void expect_model_meets_every_criterion(const std::string& name, int surfaces, int rectangles, int segments,
+                                        double fitted_below) {
   Recorder rec;
-  const RunResult r = igaprep::pipeline::run(model_case("ring2"), rec, {"", false});
-  expect_model_facts(r, 2);
-  EXPECT_EQ(r.rectangles, 8);
-  EXPECT_EQ(r.boundary_segments, 16);
+  const RunResult r = igaprep::pipeline::run(model_case(name), rec, {"", false});
+  expect_model_facts(r, surfaces);
+  EXPECT_EQ(r.rectangles, rectangles);
+  EXPECT_EQ(r.boundary_segments, segments);
   expect_certified(r, 0.2);
-  expect_jacobians_raised(r, 0.2);
+  expect_jacobians_raised(r, fitted_below);
 }
 
-TEST(PipelineModels, Torus3MeetsEveryCriterion) {
-  Recorder rec;
-  const RunResult r = igaprep::pipeline::run(model_case("torus3"), rec, {"", false});
-  expect_model_facts(r, 1);
-  EXPECT_EQ(r.rectangles, 18);
-  EXPECT_EQ(r.boundary_segments, 32);
-  expect_certified(r, 0.2);
-  expect_jacobians_raised(r, 0.0);
-}
+TEST(PipelineModels, Ring2MeetsEveryCriterion) { expect_model_meets_every_criterion("ring2", 2, 8, 16, 0.2); }
+
+TEST(PipelineModels, Torus3MeetsEveryCriterion) { expect_model_meets_every_criterion("torus3", 1, 18, 32, 0.0); }
 
 // Strategy 1 (no core, the crest volumes are fans collapsed onto M's
 // boundary): completes; the elements on the collapsed sides (4 fans x 6 x 6)

@@ -8,8 +8,6 @@
 namespace igaprep::pipeline {
 namespace {
 
-double diagonal(const Eigen::MatrixXd& V) { return (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm(); }
-
 // Every block's sample points, with the block index.
 mesh::VtuMesh samples_vtu(const param::VolumeParam& vp) {
   Eigen::Index total = 0;
@@ -74,6 +72,7 @@ Decomposition decompose_stage(const Case& c, const Surfaces& surfaces, const par
   d.H = param::decomposition_mesh(surfaces.meshes, base.m.mesh, c.tetmesh);
   d.w = param::w_field(d.H);
   d.layout = param::base_layout(base.m);
+  d.diagonal = (d.H.tets.V.colwise().maxCoeff() - d.H.tets.V.colwise().minCoeff()).norm();
   StageSummary s{"decompose", timer.seconds(),
                  text("H: %lld vertices, %lld tets; w: %zu interior extrema; M: %zu rectangles, %zu boundary segments",
                       static_cast<long long>(d.H.tets.V.rows()), static_cast<long long>(d.H.tets.T.rows()),
@@ -109,7 +108,7 @@ param::VolumeParam param_stage(const Case& c, const Decomposition& d, Observer& 
   }
   observer.stage_finished(s);
   offer_intermediate(observer, "decomposition_samples", [&] { return samples_vtu(vp); });
-  offer_blocks_mesh(vp, diagonal(d.H.tets.V), observer);
+  offer_blocks_mesh(vp, d.diagonal, observer);
   return vp;
 }
 

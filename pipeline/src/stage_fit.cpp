@@ -9,8 +9,6 @@
 namespace igaprep::pipeline {
 namespace {
 
-double diagonal(const Eigen::MatrixXd& V) { return (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm(); }
-
 // Each block fitted alone; stitching then makes shared side control points identical.
 void fit_blocks(const Case& c, const param::VolumeParam& vp, spline::MultiPatch& mp) {
   for (const auto& s : c.surfaces) mp.labels.push_back(s.label);
@@ -56,7 +54,7 @@ Fit fit_stage(const Case& c, const Decomposition& d, const param::VolumeParam& v
   Fit out;
   spline::MultiPatch& mp = out.model;
   fit_blocks(c, vp, mp);
-  const double diag = diagonal(d.H.tets.V);
+  const double diag = d.diagonal;
   out.stitched = spline::stitch_control_points(mp, 1e-9 * diag, &out.max_stitch);
   out.unmatched_sides = connect_and_label(vp, diag, mp);
   StageSummary s{"fit", 0.0,

@@ -20,6 +20,7 @@ struct Decomposition {
   param::DecompositionMesh H;  // T1..Tn with M embedded
   param::WField w;             // harmonic w on H
   param::BaseLayout layout;    // M's rectangles and boundary segments
+  double diagonal = 0.0;       // of H's bounding box: the scale of the stages' tolerances
 };
 
 struct Fit {

@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
         igaprep::mesh::TriMesh mesh = igaprep::mesh::read_surface(file);
         const double t_read = seconds_since(t0);
         const auto t1 = std::chrono::steady_clock::now();
-        report = igaprep::mesh::check_surface(mesh, file);
+        report = igaprep::mesh::check_and_repair_surface(mesh, file);
         check_s.push_back(seconds_since(t1));
         read_s.push_back(t_read);
         total_s.push_back(seconds_since(t0));

@@ -65,8 +65,7 @@ int run(int argc, char** argv) {
     const TriMesh inner = offset_inward(outer, {d});
     const double t = seconds_since(t0);
     const long hwm = vm_hwm_kib();  // before the check below adds its own memory
-    TriMesh checked = inner;
-    const SurfaceReport rep = check_surface(checked, "offset");
+    const SurfaceReport rep = check_surface(inner, "offset");
     std::printf("offset %s D=%g: %.2f s, %d -> %d triangles, genus %d, self-intersections %d, VmHWM %ld MiB\n",
                 model.c_str(), d, t, int(outer.F.rows()), int(inner.F.rows()), rep.genus, rep.self_intersections,
                 hwm / 1024);

@@ -6,13 +6,12 @@
 #include <iostream>
 #include <memory>
 
-#include "case_file.h"
-#include "case_surfaces.h"
 #include "commands.h"
 #include "igaprep/core/error.h"
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/iga_check/report.h"
 #include "igaprep/mesh/read_surface.h"
+#include "igaprep/pipeline/surfaces.h"
 
 namespace igaprep::cli {
 
@@ -29,8 +28,8 @@ int run_check(const CheckArgs& a) {
   std::vector<mesh::TriMesh> meshes;
   std::vector<std::string> labels;
   if (!a.case_file.empty()) {
-    const CaseFile c = read_case_file(a.case_file);
-    CaseSurfaces s = load_case_surfaces(c);
+    const pipeline::Case c = pipeline::read_case(a.case_file);
+    pipeline::Surfaces s = pipeline::load_surfaces(c);
     meshes = std::move(s.meshes);
     for (const auto& cs : c.surfaces) labels.push_back(cs.label);
   } else {

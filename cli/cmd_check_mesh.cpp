@@ -52,7 +52,7 @@ int check_mesh(const std::vector<std::string>& files, bool as_json) {
     bool readable = true;
     try {
       mesh::TriMesh m = mesh::read_surface(file);
-      report = mesh::check_surface(m, file);
+      report = mesh::check_and_repair_surface(m, file);
       meshes.push_back(std::move(m));
       names.push_back(file);
     } catch (const Error& e) {

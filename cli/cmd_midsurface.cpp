@@ -1,10 +1,9 @@
 // igaprep midsurface CASE.json [-o DIR]: cut loops, the midsurface M0, M0trim
 // with its 2D polycube (u, v), the rectangle layout and the base surface M
 // (seed paper, section 4), each written as VTU, with a summary on stdout.
-#include "case_file.h"
-#include "case_surfaces.h"
 #include "commands.h"
-#include "stage_midsurface.h"
+#include "igaprep/pipeline/midsurface.h"
+#include "print_observer.h"
 
 namespace igaprep::cli {
 
@@ -15,9 +14,10 @@ void add_midsurface_command(CLI::App& app) {
   sub->add_option("case", *case_path, "case file (JSON, docs/case-format.md, docs/midsurface.md)")->required();
   sub->add_option("-o,--output", *output, "output folder (default: the case's output folder)");
   set_body(sub, [case_path, output] {
-    const CaseFile c = read_case_file(*case_path);
-    const CaseSurfaces surfaces = load_case_surfaces(c);
-    run_midsurface_stage(c, surfaces, output->empty() ? c.output_dir : *output);
+    const pipeline::Case c = pipeline::read_case(*case_path);
+    PrintObserver observer(output->empty() ? c.output_dir : *output, default_intermediates());
+    const pipeline::Surfaces surfaces = pipeline::load_surfaces(c);
+    pipeline::base_stage(c, pipeline::midsurface_stage(c, surfaces, observer), observer);
     return 0;
   });
 }

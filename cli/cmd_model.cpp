@@ -2,11 +2,11 @@
 #include <filesystem>
 #include <iostream>
 
-#include "case_file.h"
 #include "commands.h"
 #include "igaprep/core/atomic_file.h"
 #include "igaprep/mesh/write_surface.h"
 #include "igaprep/models/builtin_models.h"
+#include "igaprep/pipeline/case.h"
 
 namespace igaprep::cli {
 
@@ -15,16 +15,19 @@ namespace fs = std::filesystem;
 void write_builtin_model(const std::string& name, const std::string& dir) {
   const models::BuiltinModel model = models::make_builtin_model(name);
   fs::create_directories(dir);
-  CaseFile c;
+  pipeline::Case c;
   c.name = model.name;
   for (std::size_t i = 0; i < model.surfaces.size(); ++i) {
     const std::string file = (fs::path(dir) / (model.labels[i] + ".off")).string();
     mesh::write_surface(file, model.surfaces[i]);
-    c.surfaces.push_back({model.labels[i], file, std::nullopt, 0.0});
+    pipeline::CaseSurface s;
+    s.label = model.labels[i];
+    s.file = file;
+    c.surfaces.push_back(s);
     c.materials.push_back({model.materials[i].name, model.materials[i].young_modulus, model.materials[i].poisson_ratio});
   }
   c.output_dir = (fs::path(dir) / "output").string();
-  const std::string text = case_file_json(c, dir);
+  const std::string text = pipeline::case_json(c, dir);
   write_file_atomically((fs::path(dir) / "case.json").string(), [&](std::ostream& out) { out << text; });
 }
 

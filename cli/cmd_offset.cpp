@@ -1,4 +1,5 @@
 // igaprep offset IN --inward D -o OUT: a closed surface at distance D inside IN.
+#include <chrono>
 #include <iostream>
 
 #include "commands.h"
@@ -7,7 +8,6 @@
 #include "igaprep/mesh/offset_surface.h"
 #include "igaprep/mesh/read_surface.h"
 #include "igaprep/mesh/write_surface.h"
-#include "stage_timer.h"
 
 namespace igaprep::cli {
 
@@ -23,7 +23,7 @@ void add_offset_command(CLI::App& app) {
   sub->add_option("-o,--output", args->output, "output surface (.stl, .obj or .off)")->required();
   set_body(sub, [args] {
     if (!(args->inward > 0.0)) throw bad_input("--inward must be a positive distance");
-    StageTimer timer;
+    const auto start = std::chrono::steady_clock::now();
     mesh::TriMesh surface = mesh::load_checked_surface(args->input);
     mesh::OffsetOptions options;
     options.distance = args->inward;
@@ -33,11 +33,11 @@ void add_offset_command(CLI::App& app) {
     } catch (const Error& e) {
       throw Error(e.kind(), args->input + ": " + e.what());  // name the file at fault
     }
-    mesh::SurfaceReport report = mesh::check_surface(inner, args->output);
+    mesh::SurfaceReport report = mesh::check_and_repair_surface(inner, args->output);
     if (!report.ok()) throw internal_error("the offset surface is defective: " + report.errors.front());
     mesh::write_surface(args->output, inner);
     std::cout << "offset: " << inner.V.rows() << " vertices, " << inner.F.rows() << " faces, genus " << report.genus
-              << ", volume " << report.volume << " -> " << args->output << " (" << timer.seconds() << " s)\n";
+              << ", volume " << report.volume << " -> " << args->output << " (" << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s)\n";
     return 0;
   });
 }

@@ -5,11 +5,13 @@ include(CMakeFindDependencyMacro)
 
 find_dependency(Eigen3 3.3 NO_MODULE)
 find_dependency(CGAL)
+find_dependency(nlohmann_json 3)
+find_dependency(OpenSSL)
 # FindHDF5 test-compiles a C program: a C++-only consumer needs C enabled.
 if(NOT CMAKE_C_COMPILER_LOADED)
   enable_language(C)
 endif()
-find_dependency(HDF5 COMPONENTS C CXX)
+find_dependency(HDF5 COMPONENTS C)
 
 # TetGen (libtet1.5-dev): header tetgen.h, library libtet.so, needs TETLIBRARY.
 if(NOT TARGET igaprep_dep_tetgen)
@@ -22,23 +24,13 @@ if(NOT TARGET igaprep_dep_tetgen)
     INTERFACE_COMPILE_DEFINITIONS TETLIBRARY)
 endif()
 
-# OpenSubdiv 3.5 (libosd-dev): Debian's OpenSubdivConfig.cmake names static
-# libraries that are not installed, so find the shared CPU library by hand.
-if(NOT TARGET igaprep_dep_osd)
-  find_path(IGAPREP_OSD_INCLUDE_DIR opensubdiv/far/topologyRefiner.h REQUIRED)
-  find_library(IGAPREP_OSD_LIBRARY NAMES osdCPU REQUIRED)
-  add_library(igaprep_dep_osd INTERFACE IMPORTED)
-  set_target_properties(igaprep_dep_osd PROPERTIES
-    INTERFACE_INCLUDE_DIRECTORIES "${IGAPREP_OSD_INCLUDE_DIR}"
-    INTERFACE_LINK_LIBRARIES "${IGAPREP_OSD_LIBRARY}")
-endif()
-
-# HDF5 C and C++ (serial) as one target.
+# HDF5 (serial), its C API only: export/ calls H5F/H5G/H5D/H5A directly
+# (export/src/hdf5_handle.h), not the C++ wrapper.
 if(NOT TARGET igaprep_dep_hdf5)
   add_library(igaprep_dep_hdf5 INTERFACE IMPORTED)
   set_target_properties(igaprep_dep_hdf5 PROPERTIES
     INTERFACE_INCLUDE_DIRECTORIES "${HDF5_INCLUDE_DIRS}"
-    INTERFACE_LINK_LIBRARIES "${HDF5_CXX_LIBRARIES};${HDF5_LIBRARIES}")
+    INTERFACE_LINK_LIBRARIES "${HDF5_C_LIBRARIES}")
 endif()
 
 # CHOLMOD (libsuitesparse-dev) is optional: Eigen's simplicial LDLT otherwise.

@@ -16,6 +16,7 @@
 
 #include "igaprep/core/atomic_file.h"
 #include "igaprep/core/error.h"
+#include "igaprep/core/union_find.h"
 #include "igaprep/spline/multipatch_topology.h"
 #include "model_checks.h"
 #include "number_text.h"
@@ -34,33 +35,6 @@ constexpr int kCorner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
 // MFEM's outward face cycles, by Side::array_index() (u0 u1 v0 v1 w0 w1).
 constexpr int kFaceVerts[6][4] = {{3, 0, 4, 7}, {1, 2, 6, 5}, {0, 1, 5, 4},
                                   {2, 3, 7, 6}, {3, 2, 1, 0}, {4, 5, 6, 7}};
-
-// Union-find with parity: parity[x] = orientation of x relative to its parent.
-struct ParityUnionFind {
-  std::vector<int> parent, parity;
-  explicit ParityUnionFind(int n) : parent(n), parity(n, 1) {
-    for (int i = 0; i < n; ++i) parent[i] = i;
-  }
-  std::pair<int, int> find(int x) {  // (root, parity of x relative to root)
-    int s = 1;
-    int r = x;
-    while (parent[r] != r) {
-      s *= parity[r];
-      r = parent[r];
-    }
-    return {r, s};
-  }
-  // Requires orientation(a) * orientation(b) = rel; false on contradiction.
-  bool unite(int a, int b, int rel) {
-    auto [ra, sa] = find(a);
-    auto [rb, sb] = find(b);
-    if (ra == rb) return sa * sb == rel;
-    if (rb < ra) std::swap(ra, rb);  // keep the lower root: deterministic
-    parent[rb] = ra;
-    parity[rb] = sa * sb * rel;
-    return true;
-  }
-};
 
 // Knot vector normalised to [0, 1], reversed if asked.
 std::vector<double> normalised(const std::vector<double>& U, bool reverse) {
@@ -124,7 +98,7 @@ Topology build_topology(const spline::MultiPatch& mp) {
       sign[p][e] = t.edges[it->second][0] == a ? 1 : -1;
     }
   // Parallel edges of a patch share a knot vector running the same way.
-  ParityUnionFind uf(static_cast<int>(t.edges.size()));
+  UnionFind uf(static_cast<int>(t.edges.size()));  // parity: the edge runs along (+1) or against its knot vector
   for (int p = 0; p < np; ++p)
     for (int d = 0; d < 3; ++d) {
       const int first = d == 0 ? 0 : d == 1 ? 1 : 8;
@@ -138,7 +112,7 @@ Topology build_topology(const spline::MultiPatch& mp) {
   std::map<int, int> kv_of_root;
   t.edge_kv.resize(t.edges.size());
   for (size_t e = 0; e < t.edges.size(); ++e) {
-    const auto [root, s] = uf.find(static_cast<int>(e));
+    const auto [root, s] = uf.find_with_parity(static_cast<int>(e));
     auto it = kv_of_root.find(root);
     if (it == kv_of_root.end()) it = kv_of_root.emplace(root, static_cast<int>(kv_of_root.size())).first;
     t.edge_kv[e] = it->second;

@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 
 #include "igaprep/spline/basis.h"
+#include "igaprep/spline/gauss_legendre.h"
 #include "igaprep/spline/knot_vector.h"
 
 namespace igaprep::iga_check::detail {
@@ -11,27 +12,17 @@ std::vector<DirElement> direction_elements(const std::vector<double>& U, int p, 
                                            const Eigen::VectorXd& gw) {
   const int n = spline::basis_count(U, p);
   std::vector<DirElement> out;
-  std::vector<double> ders(2 * (p + 1));
   for (int s = p; s < n; ++s) {
     const double a = U[s], b = U[s + 1];
     if (!(b > a)) continue;
     DirElement e;
     e.first = s - p;
-    const int nq = static_cast<int>(gp.size());
-    e.u.resize(nq);
-    e.w.resize(nq);
-    e.N.resize(nq, p + 1);
-    e.dN.resize(nq, p + 1);
-    for (int q = 0; q < nq; ++q) {
-      e.u[q] = a + (b - a) * gp(q);
-      e.w[q] = (b - a) * gw(q);
-      // The span is known: no search, and points never land on the wrong side of a knot.
-      spline::basis_derivatives(U, p, s, e.u[q], 1, ders.data());
-      for (int r = 0; r <= p; ++r) {
-        e.N(q, r) = ders[r];
-        e.dN(q, r) = ders[p + 1 + r];
-      }
+    for (Eigen::Index q = 0; q < gp.size(); ++q) {
+      e.u.push_back(a + (b - a) * gp(q));
+      e.w.push_back((b - a) * gw(q));
     }
+    // The span is known: no search, and points never land on the wrong side of a knot.
+    e.basis = spline::basis_table_on_span(U, p, s, e.u, 1);
     out.push_back(std::move(e));
   }
   return out;
@@ -39,19 +30,21 @@ std::vector<DirElement> direction_elements(const std::vector<double>& U, int p, 
 
 DirElement direction_point(const std::vector<double>& U, int p, double u) {
   DirElement e;
-  const int s = spline::find_span(U, p, u);
-  e.first = s - p;
   e.u = {u};
   e.w = {1.0};
-  std::vector<double> ders(2 * (p + 1));
-  spline::basis_derivatives(U, p, s, u, 1, ders.data());
-  e.N.resize(1, p + 1);
-  e.dN.resize(1, p + 1);
-  for (int r = 0; r <= p; ++r) {
-    e.N(0, r) = ders[r];
-    e.dN(0, r) = ders[p + 1 + r];
-  }
+  e.basis = spline::basis_table(U, p, e.u, 1);
+  e.first = e.basis.span[0] - p;
   return e;
+}
+
+std::array<std::vector<DirElement>, 3> patch_elements(const spline::Patch& p, int extra) {
+  std::array<std::vector<DirElement>, 3> t;
+  for (int d = 0; d < 3; ++d) {
+    Eigen::VectorXd gp, gw;
+    spline::gauss_legendre(p.degrees[d] + 1 + extra, gp, gw);
+    t[d] = direction_elements(p.knots[d], p.degrees[d], gp, gw);
+  }
+  return t;
 }
 
 void element_values(const spline::Patch& patch, const DirElement& eu, const DirElement& ev, const DirElement& ew,

@@ -3,19 +3,24 @@
 // physical gradients on one element, from 1-D tables built once per direction
 // (the tensor structure: a volume element is a triple of 1-D elements).
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
+#include "igaprep/spline/basis.h"
 #include "igaprep/spline/multipatch.h"
 
 namespace igaprep::iga_check::detail {
 
 // One element (non-empty knot span) of one direction with its quadrature:
-// params u[q], weights w[q] (already scaled by the span length), the p+1
-// non-zero functions starting at `first`: N(q, r), dN(q, r).
+// params u[q], weights w[q] (already scaled by the span length), and the
+// spline basis table there (values and first derivatives of the p+1
+// non-zero functions, starting at `first`).
 struct DirElement {
   int first = 0;
   std::vector<double> u, w;
-  Eigen::MatrixXd N, dN;
+  spline::BasisTable basis;  // order 1
+  double N(int q, int r) const { return basis.at(q, 0)[r]; }
+  double dN(int q, int r) const { return basis.at(q, 1)[r]; }
   int size() const { return static_cast<int>(u.size()); }
 };
 
@@ -24,6 +29,9 @@ std::vector<DirElement> direction_elements(const std::vector<double>& U, int p, 
                                            const Eigen::VectorXd& gw);
 // A single parameter (weight 1): point evaluation and the fixed direction of a side.
 DirElement direction_point(const std::vector<double>& U, int p, double u);
+// The elements of a patch in each direction, with degree + 1 + extra Gauss
+// points: built once per patch, combined into volume elements (tensor structure).
+std::array<std::vector<DirElement>, 3> patch_elements(const spline::Patch& p, int extra);
 
 // Values on an element at the tensor quadrature points q = qu + nu*(qv + nv*qw),
 // local basis a = iu + (pu+1)*(iv + (pv+1)*iw).

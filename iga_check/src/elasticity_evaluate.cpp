@@ -5,7 +5,6 @@
 #include "elasticity_basis.h"
 #include "igaprep/core/error.h"
 #include "igaprep/iga_check/elasticity_material.h"
-#include "igaprep/iga_check/elasticity_quadrature.h"
 
 namespace igaprep::iga_check {
 
@@ -77,12 +76,7 @@ ElasticityErrors elasticity_errors(const spline::MultiPatch& mp, const Displacem
   for (int pi = 0; pi < static_cast<int>(mp.patches.size()); ++pi) {
     const spline::Patch& p = solved_patch(mp, pi);
     const LameParameters lame = patch_lame(mp, pi);
-    std::array<std::vector<detail::DirElement>, 3> t;
-    for (int d = 0; d < 3; ++d) {
-      Eigen::VectorXd gp, gw;
-      gauss_legendre(p.degrees[d] + 1 + extra, gp, gw);
-      t[d] = detail::direction_elements(p.knots[d], p.degrees[d], gp, gw);
-    }
+    const std::array<std::vector<detail::DirElement>, 3> t = detail::patch_elements(p, extra);
     detail::ElementValues ev;
     Eigen::MatrixXd U;
     std::vector<Eigen::Matrix3d> G;

@@ -3,11 +3,11 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <map>
-#include <numeric>
 #include <sstream>
 #include <string>
 
 #include "igaprep/core/error.h"
+#include "igaprep/core/union_find.h"
 
 namespace igaprep::iga_check::detail {
 
@@ -26,22 +26,17 @@ struct Parts {
 
 Parts connected_parts(const spline::MultiPatch& mp, const spline::GlobalNumbering& num) {
   const int np = static_cast<int>(mp.patches.size());
-  std::vector<int> parent(np);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int a) {
-    while (parent[a] != a) a = parent[a] = parent[parent[a]];
-    return a;
-  };
+  UnionFind connected(np);  // patches that share a control point
   Parts parts;
   parts.owner.assign(num.count, -1);
   for (int p = 0; p < np; ++p)
     for (int g : num.global[p]) {
       if (parts.owner[g] < 0) parts.owner[g] = p;
-      else parent[find(p)] = find(parts.owner[g]);
+      else connected.unite(p, parts.owner[g]);
     }
   parts.root.resize(np);
   for (int p = 0; p < np; ++p) {
-    parts.root[p] = find(p);
+    parts.root[p] = connected.find(p);
     parts.patches[parts.root[p]].push_back(p);
   }
   return parts;

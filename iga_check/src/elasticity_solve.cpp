@@ -45,7 +45,7 @@ ElasticitySolution solve_elasticity(const spline::MultiPatch& input, const Elast
   rep.fixed_dofs = static_cast<long long>(dofs.constrained.size()) - dofs.unknowns;
   rep.prescribed_dofs = dofs.prescribed;
 
-  const detail::StiffnessSystem system = detail::assemble_stiffness(mp, tables, dofs, lame, rep);
+  const detail::StiffnessSystem system = detail::assemble_stiffness(mp, tables, dofs, lame, rep, options.progress);
   Eigen::VectorXd F = detail::assemble_loads(mp, tables, dofs, problem);
   F -= system.lifting;
   rep.assembly_seconds = seconds_since(t_assembly);

@@ -79,7 +79,7 @@ void add_lifting(const ElasticityDofs& dofs, const std::vector<int>& gid, const 
 
 StiffnessSystem assemble_stiffness(const spline::MultiPatch& mp, const std::vector<PatchTables>& tables,
                                    const ElasticityDofs& dofs, const std::vector<LameParameters>& lame,
-                                   ElasticityReport& report) {
+                                   ElasticityReport& report, const ProgressCallback& progress_callback) {
   const std::vector<std::vector<int>> element_cps = element_control_points(mp, tables, dofs.numbering);
   report.elements = static_cast<long long>(element_cps.size());
   StiffnessPattern P = build_stiffness_pattern(element_cps, dofs.numbering.count, dofs.equation);
@@ -87,7 +87,7 @@ StiffnessSystem assemble_stiffness(const spline::MultiPatch& mp, const std::vect
   StiffnessSystem sys;
   sys.lifting = Eigen::VectorXd::Zero(dofs.unknowns);
   const bool has_prescribed = dofs.prescribed > 0;
-  Progress progress("assembling stiffness", element_cps.size());
+  Progress progress("assembling stiffness", element_cps.size(), progress_callback);
   ElementValues ev;
   Eigen::MatrixXd Ke, work;
   Eigen::VectorXd ue, Ku_e;

@@ -25,6 +25,6 @@ struct StiffnessSystem {
 // in a patch.
 StiffnessSystem assemble_stiffness(const spline::MultiPatch& mp, const std::vector<PatchTables>& tables,
                                    const ElasticityDofs& dofs, const std::vector<LameParameters>& lame,
-                                   ElasticityReport& report);
+                                   ElasticityReport& report, const ProgressCallback& progress);
 
 }  // namespace igaprep::iga_check::detail

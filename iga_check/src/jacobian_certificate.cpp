@@ -345,7 +345,7 @@ std::vector<ElementCertificate> certify_patch(const spline::Patch& p, int patch_
 
 std::vector<ElementCertificate> certify_model(const spline::MultiPatch& mp, const CertifyOptions& options) {
   std::vector<ElementCertificate> out;
-  Progress progress("certify Jacobians", mp.patches.size());
+  Progress progress("certify Jacobians", mp.patches.size(), options.progress);
   for (size_t i = 0; i < mp.patches.size(); ++i) {
     auto part = certify_patch(mp.patches[i], static_cast<int>(i), options);
     out.insert(out.end(), part.begin(), part.end());

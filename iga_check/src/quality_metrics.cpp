@@ -7,17 +7,11 @@
 #include <string>
 
 #include "igaprep/core/error.h"
-#include "igaprep/iga_check/elasticity_quadrature.h"
 #include "igaprep/spline/evaluate.h"
+#include "igaprep/spline/gauss_legendre.h"
 #include "igaprep/spline/knot_vector.h"
 
 namespace igaprep::iga_check {
-
-double scaled_jacobian(const Eigen::Matrix3d& J) {
-  const double n = J.col(0).norm() * J.col(1).norm() * J.col(2).norm();
-  if (!(n > 0.0)) return 0.0;
-  return J.determinant() / n;
-}
 
 double condition_number(const Eigen::Matrix3d& J) {
   const double det = J.determinant();
@@ -92,7 +86,7 @@ PatchSampling sampling(const spline::Patch& p, size_t pi, const QualityOptions& 
     for (int g = 0; g < options.grid; ++g) local.push_back(double(g) / (options.grid - 1));
     if (options.gauss) {
       Eigen::VectorXd gp, gw;
-      gauss_legendre(p.degrees[d] + 1, gp, gw);
+      spline::gauss_legendre(p.degrees[d] + 1, gp, gw);
       for (int g = 0; g < gp.size(); ++g) local.push_back(gp[g]);
     }
     std::sort(local.begin(), local.end());

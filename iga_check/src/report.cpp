@@ -252,19 +252,18 @@ CheckReport build_check_report(const spline::MultiPatch& mp, const std::vector<m
       r.warnings.push_back("region " + std::to_string(rv.region) + " volume differs from the input by " +
                            fmt(100 * rv.relative_difference) + "%");
 
-  long counts[4] = {0, 0, 0, 0};
-  for (const auto& c : r.certificates) ++counts[static_cast<int>(c.status)];
+  const ElementTotals t = element_totals(r);
   std::ostringstream v;
   if (r.passed) {
-    v << "PASS: all " << r.certificates.size() << " elements of " << mp.patches.size() << " patches certified: "
-      << counts[0] << " positive";
-    if (counts[2] > 0) v << ", " << counts[2] << " degenerate (det J = 0 only on the element boundary, allowed)";
+    v << "PASS: all " << t.elements << " elements of " << mp.patches.size() << " patches certified: "
+      << t.positive << " positive";
+    if (t.degenerate > 0) v << ", " << t.degenerate << " degenerate (det J = 0 only on the element boundary, allowed)";
   } else {
     v << "FAIL: patches";
     for (int p : r.failed_patches) v << ' ' << p;
-    v << " not certified positive (" << counts[1] << " negative, " << counts[2] << " degenerate"
-      << (options.allow_degenerate ? " allowed" : "") << ", " << counts[3] << " undecided elements)";
-    if (!options.allow_degenerate && counts[1] == 0 && counts[3] == 0)
+    v << " not certified positive (" << t.negative << " negative, " << t.degenerate << " degenerate"
+      << (options.allow_degenerate ? " allowed" : "") << ", " << t.undecided << " undecided elements)";
+    if (!options.allow_degenerate && t.negative == 0 && t.undecided == 0)
       v << "; only degenerate elements fail: a check that allows degenerate elements "
            "(CheckOptions::allow_degenerate) accepts them";
   }
@@ -272,24 +271,35 @@ CheckReport build_check_report(const spline::MultiPatch& mp, const std::vector<m
   return r;
 }
 
+ElementTotals element_totals(const CheckReport& r) {
+  ElementTotals t;
+  for (const PatchSummary& p : r.patches) {
+    t.elements += p.elements;
+    t.positive += p.positive;
+    t.negative += p.negative;
+    t.degenerate += p.degenerate;
+    t.undecided += p.undecided;
+  }
+  return t;
+}
+
 std::string report_json(const CheckReport& r) {
   ordered_json j;
   j["format"] = "igaprep-check-report";
   j["format_version"] = 1;
   j["model"] = r.model;
-  long counts[4] = {0, 0, 0, 0};
-  for (const auto& c : r.certificates) ++counts[static_cast<int>(c.status)];
+  const ElementTotals totals = element_totals(r);
   double min_lower = std::numeric_limits<double>::infinity();
   for (const auto& c : r.certificates) min_lower = std::min(min_lower, c.lower_bound);
   j["summary"] = {{"passed", r.passed},
                   {"verdict", r.verdict},
                   {"allow_degenerate", r.allow_degenerate},
                   {"patches", r.patches.size()},
-                  {"elements", r.certificates.size()},
-                  {"positive", counts[0]},
-                  {"negative", counts[1]},
-                  {"degenerate", counts[2]},
-                  {"undecided", counts[3]},
+                  {"elements", totals.elements},
+                  {"positive", totals.positive},
+                  {"negative", totals.negative},
+                  {"degenerate", totals.degenerate},
+                  {"undecided", totals.undecided},
                   {"failed_patches", r.failed_patches},
                   {"min_det_j_lower_bound", num(min_lower)},
                   {"min_scaled_jacobian", num(r.quality.overall.scaled_jacobian.min)},

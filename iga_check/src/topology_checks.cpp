@@ -5,10 +5,11 @@
 #include <string>
 
 #include "igaprep/core/error.h"
-#include "igaprep/iga_check/elasticity_quadrature.h"
 #include "igaprep/iga_check/fidelity.h"
+#include "igaprep/mesh/enclosed_volume.h"
 #include "igaprep/spline/curve_surface.h"
 #include "igaprep/spline/evaluate.h"
+#include "igaprep/spline/gauss_legendre.h"
 #include "igaprep/spline/knot_vector.h"
 #include "igaprep/spline/multipatch_topology.h"
 
@@ -19,7 +20,7 @@ namespace {
 // Gauss points and weights over all elements of a knot vector.
 void gauss_grid(const std::vector<double>& U, int n, std::vector<double>* pts, std::vector<double>* wts) {
   Eigen::VectorXd gp, gw;
-  gauss_legendre(n, gp, gw);
+  spline::gauss_legendre(n, gp, gw);
   const std::vector<double> brk = spline::unique_knots(U);
   for (size_t e = 0; e + 1 < brk.size(); ++e) {
     const double h = brk[e + 1] - brk[e];
@@ -31,15 +32,6 @@ void gauss_grid(const std::vector<double>& U, int n, std::vector<double>* pts, s
 }
 
 }  // namespace
-
-double enclosed_volume(const mesh::TriMesh& m) {
-  double v = 0.0;
-  for (int f = 0; f < m.F.rows(); ++f) {
-    const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
-    v += a.dot(b.cross(c));
-  }
-  return v / 6.0;
-}
 
 double winding_number(const mesh::TriMesh& m, const Eigen::Vector3d& x) {
   // Sum of signed solid angles (Van Oosterom & Strackee) over 4 pi.
@@ -162,7 +154,7 @@ TopologyReport topology_checks(const spline::MultiPatch& mp, const std::vector<m
   }
   if (!surfaces.empty()) {
     std::vector<double> enclosed;
-    for (const auto& s : surfaces) enclosed.push_back(std::abs(enclosed_volume(s)));
+    for (const auto& s : surfaces) enclosed.push_back(std::abs(mesh::enclosed_volume(s)));
     for (size_t i = 0; i < surfaces.size(); ++i) {
       RegionVolume rv;
       rv.region = static_cast<int>(i);

@@ -3,70 +3,23 @@
 #include <algorithm>
 #include <Eigen/Geometry>
 #include <cstdint>
-#include <numeric>
 #include <unordered_set>
 #include <vector>
 
-#include "igaprep/core/error.h"
+#include "igaprep/core/union_find.h"
 
 namespace igaprep::mesh::detail {
 
-SurfaceMesh to_surface_mesh(const TriMesh& mesh, const std::string& what) {
-  SurfaceMesh sm;
-  std::vector<SurfaceMesh::Vertex_index> vid(mesh.V.rows());
-  for (Eigen::Index i = 0; i < mesh.V.rows(); ++i) {
-    vid[i] = sm.add_vertex(Point3(mesh.V(i, 0), mesh.V(i, 1), mesh.V(i, 2)));
-  }
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-    for (int c = 0; c < 3; ++c) {
-      if (mesh.F(f, c) < 0 || mesh.F(f, c) >= mesh.V.rows()) {
-        throw bad_input(what + ": triangle " + std::to_string(f) + " has an out-of-range vertex index");
-      }
-    }
-    if (sm.add_face(vid[mesh.F(f, 0)], vid[mesh.F(f, 1)], vid[mesh.F(f, 2)]) == SurfaceMesh::null_face()) {
-      throw bad_input(what + ": triangle " + std::to_string(f) +
-                      " makes the surface non-manifold or inconsistently oriented");
-    }
-  }
-  return sm;
-}
-
-TriMesh from_surface_mesh(const SurfaceMesh& sm) {
-  TriMesh out;
-  std::vector<int> index(sm.number_of_vertices() + sm.number_of_removed_vertices(), -1);
-  out.V.resize(sm.number_of_vertices(), 3);
-  int n = 0;
-  for (auto v : sm.vertices()) {
-    const Point3& p = sm.point(v);
-    out.V.row(n) << p.x(), p.y(), p.z();
-    index[v.idx()] = n++;
-  }
-  out.F.resize(sm.number_of_faces(), 3);
-  int f = 0;
-  for (auto face : sm.faces()) {
-    int c = 0;
-    for (auto v : CGAL::vertices_around_face(sm.halfedge(face), sm)) out.F(f, c++) = index[v.idx()];
-    ++f;
-  }
-  return out;
-}
-
 SurfaceTopology surface_topology(const TriMesh& mesh) {
   const int nv = static_cast<int>(mesh.V.rows());
-  // Union-find over vertices used by triangles.
-  std::vector<int> parent(nv);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  UnionFind vertex_sets(nv);  // vertices used by triangles, joined along edges
   std::vector<char> used(nv, 0);
   std::unordered_set<std::uint64_t> edges;
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
     for (int c = 0; c < 3; ++c) {
       const int a = mesh.F(f, c), b = mesh.F(f, (c + 1) % 3);
       used[a] = 1;
-      parent[find(a)] = find(b);
+      vertex_sets.unite(a, b);
       const std::uint64_t lo = std::min(a, b), hi = std::max(a, b);
       edges.insert(lo * static_cast<std::uint64_t>(nv) + hi);
     }
@@ -75,22 +28,13 @@ SurfaceTopology surface_topology(const TriMesh& mesh) {
   for (int v = 0; v < nv; ++v) {
     if (!used[v]) continue;
     ++used_vertices;
-    if (find(v) == v) ++components;
+    if (vertex_sets.find(v) == v) ++components;
   }
   const long chi = static_cast<long>(used_vertices) - static_cast<long>(edges.size()) + mesh.F.rows();
   SurfaceTopology t;
   t.components = components;
   t.genus = static_cast<int>((2L * components - chi) / 2);
   return t;
-}
-
-double enclosed_volume(const TriMesh& mesh) {
-  double vol = 0;
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-    const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
-    vol += a.dot(b.cross(c));
-  }
-  return vol / 6.0;
 }
 
 }  // namespace igaprep::mesh::detail

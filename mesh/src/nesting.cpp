@@ -1,25 +1,23 @@
 #include "igaprep/mesh/nesting.h"
 
 #include <cstdio>
-#include <memory>
+#include <optional>
 
 #include <CGAL/Box_intersection_d/Box_with_info_d.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Side_of_triangle_mesh.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include "igaprep/core/error.h"
+#include "igaprep/mesh/to_surface_mesh.h"
 
 namespace igaprep::mesh {
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;  // exact predicates
-using Point = Kernel::Point_3;
+using Kernel = CgalKernel;
+using Point = CgalPoint;
 using Triangle = Kernel::Triangle_3;
-using SurfaceMesh = CGAL::Surface_mesh<Point>;
 using Box = CGAL::Box_intersection_d::Box_with_info_d<double, 3, int>;
 
 std::string coords(const Eigen::Vector3d& p) {
@@ -72,20 +70,11 @@ NestingReport check_nesting(const std::vector<TriMesh>& surfaces, const std::vec
 
   // CGAL copies for the inside/outside tests; a surface CGAL cannot hold as a
   // closed mesh cannot be tested.
-  std::vector<std::unique_ptr<SurfaceMesh>> sm(n);
+  std::vector<std::optional<SurfaceMesh>> sm(n);
   std::vector<bool> usable(n, false);
   for (size_t i = 0; i < n; ++i) {
-    const TriMesh& m = surfaces[i];
-    sm[i] = std::make_unique<SurfaceMesh>();
-    bool built = m.F.rows() > 0 && m.V.cols() == 3 && m.F.cols() == 3 && m.F.minCoeff() >= 0 &&
-                 m.F.maxCoeff() < m.V.rows();
-    if (built) {
-      for (int v = 0; v < m.V.rows(); ++v) sm[i]->add_vertex(Point(m.V(v, 0), m.V(v, 1), m.V(v, 2)));
-      for (int f = 0; f < m.F.rows() && built; ++f)
-        built = sm[i]->add_face(SurfaceMesh::Vertex_index(m.F(f, 0)), SurfaceMesh::Vertex_index(m.F(f, 1)),
-                                SurfaceMesh::Vertex_index(m.F(f, 2))) != SurfaceMesh::null_face();
-    }
-    usable[i] = built && CGAL::is_closed(*sm[i]);
+    if (surfaces[i].F.rows() > 0) sm[i] = try_to_surface_mesh(surfaces[i]);
+    usable[i] = sm[i] && CGAL::is_closed(*sm[i]);
     if (!usable[i])
       report.errors.push_back(quoted(i) + " is not a closed, manifold, consistently oriented triangle surface, so "
                               "its nesting cannot be decided (run the surface check first)");

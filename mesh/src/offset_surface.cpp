@@ -118,7 +118,7 @@ TriMesh offset_inward(const TriMesh& surface, const OffsetOptions& options) {
   const double D = options.distance;
   if (!(D > 0) || !std::isfinite(D)) throw bad_input("offset_inward: the offset distance must be positive, got " + fmt(D));
   if (surface.F.rows() < 4) throw bad_input("offset_inward: the surface has fewer than 4 triangles");
-  SurfaceMesh sm = detail::to_surface_mesh(surface, "offset_inward: input surface");
+  SurfaceMesh sm = to_surface_mesh(surface, "offset_inward: input surface");
   if (!CGAL::is_closed(sm)) throw bad_input("offset_inward: the input surface is not closed");
   const detail::SurfaceTopology topo_in = detail::surface_topology(surface);
   const double h = options.edge_length > 0 ? options.edge_length : mean_edge_length(surface);
@@ -208,7 +208,7 @@ TriMesh offset_inward(const TriMesh& surface, const OffsetOptions& options) {
   if (!CGAL::is_closed(out_sm)) {
     throw internal_error("offset_inward: the meshed offset surface (D = " + fmt(D) + ") is not closed");
   }
-  TriMesh out = detail::from_surface_mesh(out_sm);
+  TriMesh out = from_surface_mesh(out_sm);
   const detail::SurfaceTopology topo_out = detail::surface_topology(out);
   if (topo_out.genus != topo_in.genus || topo_out.components != topo_in.components) {
     throw refuse("changes the topology (genus " + std::to_string(topo_in.genus) + " -> " +
@@ -243,7 +243,7 @@ TriMesh offset_inward(const TriMesh& surface, const OffsetOptions& options) {
   }
   if (!PMP::is_outward_oriented(out_sm)) {
     PMP::reverse_face_orientations(out_sm);
-    out = detail::from_surface_mesh(out_sm);
+    out = from_surface_mesh(out_sm);
   }
   if (PMP::does_self_intersect(out_sm)) {
     throw internal_error("offset_inward: the meshed offset surface (D = " + fmt(D) + ") self-intersects");

@@ -137,7 +137,7 @@ std::vector<SurfaceMesh> checked_surface_meshes(const SurfaceSet& set) {
   std::vector<SurfaceMesh> meshes;
   meshes.reserve(set.all.size());
   for (std::size_t k = 0; k < set.all.size(); ++k) {
-    meshes.push_back(detail::to_surface_mesh(*set.all[k], "tetrahedralize: " + set.name(static_cast<int>(k))));
+    meshes.push_back(to_surface_mesh(*set.all[k], "tetrahedralize: " + set.name(static_cast<int>(k))));
   }
   for (int k = 0; k < set.n; ++k) {
     if (!CGAL::is_closed(meshes[k])) throw bad_input("tetrahedralize: " + set.name(k) + " is not closed");

@@ -34,3 +34,11 @@ BuiltinModel make_builtin_model(const std::string& name) {
 }
 
 }  // namespace igaprep::models
+
+namespace igaprep::models {
+
+std::vector<std::string> builtin_model_names() { return {"sphere2", "ring2", "torus3"}; }
+
+std::string default_model_name() { return "ring2"; }
+
+}  // namespace igaprep::models

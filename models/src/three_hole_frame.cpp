@@ -3,10 +3,8 @@
 // grid, then remeshed isotropically with CGAL. (CGAL's Delaunay surface
 // mesher was the first choice, but its refinement queue is ordered by memory
 // addresses, so its output changed from one call to the next in one process.)
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <Eigen/Geometry>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <array>
@@ -14,15 +12,12 @@
 #include <vector>
 
 #include "igaprep/mesh/marching_tets.h"
+#include "igaprep/mesh/to_surface_mesh.h"
 #include "igaprep/models/shapes.h"
 
 namespace igaprep::models {
 
 namespace {
-
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point3 = Kernel::Point_3;
-using SurfaceMesh = CGAL::Surface_mesh<Point3>;
 
 struct Segment2 {
   double ax, ay, bx, by;
@@ -105,30 +100,13 @@ mesh::TriMesh make_three_hole_frame(double tube_radius, double edge_length) {
 
   // Remesh to well-shaped triangles of the target size; Surface_mesh works on
   // indices, so the result depends only on the input.
-  SurfaceMesh sm;
-  std::vector<SurfaceMesh::Vertex_index> vertex(static_cast<std::size_t>(iso.mesh.V.rows()));
-  for (Eigen::Index i = 0; i < iso.mesh.V.rows(); ++i)
-    vertex[static_cast<std::size_t>(i)] = sm.add_vertex(Point3(iso.mesh.V(i, 0), iso.mesh.V(i, 1), iso.mesh.V(i, 2)));
-  for (Eigen::Index f = 0; f < iso.mesh.F.rows(); ++f)
-    sm.add_face(vertex[static_cast<std::size_t>(iso.mesh.F(f, 0))], vertex[static_cast<std::size_t>(iso.mesh.F(f, 1))],
-                vertex[static_cast<std::size_t>(iso.mesh.F(f, 2))]);
+  mesh::SurfaceMesh sm = mesh::to_surface_mesh(iso.mesh, "three-hole frame: the contoured surface");
   CGAL::Polygon_mesh_processing::isotropic_remeshing(faces(sm), edge_length, sm,
                                                      CGAL::parameters::number_of_iterations(5));
+  // collect_garbage renumbers (it moves the last elements into the gaps):
+  // the model keeps the numbering it has always had.
   sm.collect_garbage();
-
-  mesh::TriMesh m;
-  m.V.resize(static_cast<Eigen::Index>(sm.number_of_vertices()), 3);
-  for (auto v : sm.vertices()) {
-    const Point3& p = sm.point(v);
-    m.V.row(static_cast<Eigen::Index>(v.idx())) << p.x(), p.y(), p.z();
-  }
-  m.F.resize(static_cast<Eigen::Index>(sm.number_of_faces()), 3);
-  for (auto f : sm.faces()) {
-    int c = 0;
-    for (auto v : CGAL::vertices_around_face(sm.halfedge(f), sm))
-      m.F(static_cast<Eigen::Index>(f.idx()), c++) = static_cast<int>(v.idx());
-  }
-  return m;
+  return mesh::from_surface_mesh(sm);
 }
 
 }  // namespace igaprep::models

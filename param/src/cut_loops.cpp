@@ -2,10 +2,11 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
+#include <cstring>
 #include <cstdint>
 #include <map>
-#include <numeric>
 #include <set>
 #include <sstream>
 #include <unordered_map>
@@ -14,6 +15,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "igaprep/core/error.h"
+#include "igaprep/core/union_find.h"
 
 namespace igaprep::param {
 namespace {
@@ -31,16 +33,6 @@ std::unordered_map<std::uint64_t, std::vector<int>> edge_faces(const Eigen::Matr
     for (int k = 0; k < 3; ++k) map[edge_key(F(f, k), F(f, (k + 1) % 3))].push_back(f);
   return map;
 }
-
-struct UnionFind {
-  std::vector<int> p;
-  explicit UnionFind(int n) : p(static_cast<std::size_t>(n)) { std::iota(p.begin(), p.end(), 0); }
-  int find(int x) {
-    while (p[x] != x) x = p[x] = p[p[x]];
-    return x;
-  }
-  void unite(int a, int b) { p[find(a)] = find(b); }
-};
 
 const char* kAdvice =
     "give a plane ({\"midsurface\": {\"cut\": {\"plane\": {\"point\": [x,y,z], \"normal\": [x,y,z]}}}}) "
@@ -398,6 +390,75 @@ CutLoops cut_automatic(const mesh::TriMesh& T1, const std::string& name) {
     }
   }
   throw bad_input(name + ": no automatic cut plane gives valid loops:" + reasons);
+}
+
+}  // namespace igaprep::param
+
+namespace igaprep::param {
+namespace {
+
+// A refusal's kind: its first clause with every number replaced by '#',
+// every parenthesis by "(...)" and runs of spaces by one.
+std::string refusal_kind(const std::string& message) {
+  const std::string clause = message.substr(0, message.find(';'));
+  std::string kind;
+  for (std::size_t i = 0; i < clause.size(); ++i) {
+    const char ch = clause[i];
+    if (ch == '(') {
+      kind += "(...)";
+      while (i + 1 < clause.size() && clause[i] != ')') ++i;
+    } else if (std::isdigit(static_cast<unsigned char>(ch))) {
+      kind += '#';
+      while (i + 1 < clause.size() && std::strchr("0123456789.e+-", clause[i + 1]) != nullptr) ++i;
+    } else if (ch != ' ' || kind.empty() || kind.back() != ' ') {
+      kind += ch;
+    }
+  }
+  return kind;
+}
+
+std::vector<std::string> summarise(const std::map<std::string, int>& kinds) {
+  std::vector<std::string> out;
+  for (const auto& [kind, count] : kinds) out.push_back(std::to_string(count) + " x " + kind);
+  return out;
+}
+
+}  // namespace
+
+double loops_length(const CutLoops& cut) {
+  double length = 0.0;
+  for (const auto& loop : cut.loops)
+    for (std::size_t i = 0; i < loop.size(); ++i)
+      length += (cut.surface.V.row(loop[i]) - cut.surface.V.row(loop[(i + 1) % loop.size()])).norm();
+  return length;
+}
+
+PlaneFamily cut_plane_family(const mesh::TriMesh& T1, int normals, int offsets, const std::string& name) {
+  PlaneFamily family;
+  const Eigen::Vector3d c = T1.V.colwise().mean().transpose();
+  std::map<std::string, int> kinds;
+  std::vector<std::pair<double, CutLoops>> found;
+  for (int i = 0; i < normals; ++i) {
+    const double z = 1.0 - (i + 0.5) / normals, r = std::sqrt(1.0 - z * z), phi = 2.399963229728653 * i;
+    const Eigen::Vector3d n(r * std::cos(phi), r * std::sin(phi), z);
+    const Eigen::VectorXd d = (T1.V.rowwise() - c.transpose()) * n;
+    for (int k = 1; k <= offsets; ++k) {
+      const double t = d.minCoeff() + (d.maxCoeff() - d.minCoeff()) * k / (offsets + 1.0);
+      ++family.tried;
+      try {
+        CutLoops cut = cut_by_plane(T1, {c + t * n, n}, name);
+        cut.source = "plane family: " + cut.source;
+        found.emplace_back(loops_length(cut), std::move(cut));
+      } catch (const Error& e) {
+        if (e.kind() != ErrorKind::BadInput) throw;
+        ++kinds[refusal_kind(e.what())];
+      }
+    }
+  }
+  std::stable_sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (auto& f : found) family.valid.push_back(std::move(f.second));
+  family.refusals = summarise(kinds);
+  return family;
 }
 
 }  // namespace igaprep::param

@@ -11,11 +11,8 @@
 
 #include <Eigen/Geometry>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Surface_mesh.h>
-
 #include "igaprep/core/error.h"
+#include "igaprep/mesh/self_intersections.h"
 #include "igaprep/param/base_layout.h"
 #include "igaprep/param/sheet_topology.h"
 
@@ -192,23 +189,20 @@ std::array<bool, 2> on_domain_lines(const RectilinearDomain& D, const Eigen::Vec
 
 }  // namespace
 
-bool sheet_self_intersects(const mesh::TriMesh& sheet) {
-  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
-  SurfaceMesh sm;
-  for (Eigen::Index v = 0; v < sheet.V.rows(); ++v) sm.add_vertex(Kernel::Point_3(sheet.V(v, 0), sheet.V(v, 1), sheet.V(v, 2)));
-  for (Eigen::Index f = 0; f < sheet.F.rows(); ++f)
-    if (sm.add_face(SurfaceMesh::Vertex_index(sheet.F(f, 0)), SurfaceMesh::Vertex_index(sheet.F(f, 1)),
-                    SurfaceMesh::Vertex_index(sheet.F(f, 2))) == SurfaceMesh::null_face())
-      return false;  // not an oriented 2-manifold: analyze_sheet reports that
-  return CGAL::Polygon_mesh_processing::does_self_intersect(sm);
+bool sheet_self_intersects(const mesh::TriMesh& sheet, const std::string& name) {
+  const auto pairs = mesh::find_self_intersections(sheet);
+  if (!pairs)
+    throw bad_input(name + ": cannot tell whether it intersects itself: it is not an oriented 2-manifold "
+                           "(non-manifold, inconsistently oriented or a bad vertex index)");
+  return !pairs->empty();
 }
 
-InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double m0, int smoothing) {
-  if (!(m0 > 0.0 && m0 < 1.0)) throw bad_input("inset base surface: m0 = " + std::to_string(m0) + " is outside (0, 1)");
+InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double inset, int smoothing) {
+  if (!(inset > 0.0 && inset < 1.0))
+    throw bad_input("inset base surface: inset = " + std::to_string(inset) + " is outside (0, 1)");
   const RectilinearDomain& D = polycube.domain;
   const double band = narrowest_band(D);
-  const double d = 0.5 * m0 * band;
+  const double d = 0.5 * inset * band;
 
   InsetBase out;
   out.inset = d;
@@ -291,6 +285,12 @@ InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polyc
     const auto on = on_domain_lines(out.domain, uv.row(v).transpose());
     corner[static_cast<std::size_t>(v)] = on[0] && on[1];
   }
+  // The sheet's connectivity is final here (smoothing moves vertices only):
+  // one oriented sheet with a boundary loop per domain boundary, else no M.
+  // This also lets the self-intersection test below always decide.
+  const std::string name = "the inset base surface (d = " + std::to_string(d) + ")";
+  const std::string problem = describe_sheet_problem(analyze_sheet(F, V.rows()), static_cast<int>(D.holes.size()) + 1, name);
+  if (!problem.empty()) throw check_failed(problem);
   // Smoothing moves vertices along their normals; where M0trim folds sharply
   // that can make M cross itself (the genus-3 torus of ../shared/models at 5
   // rounds), which H cannot embed: then fewer rounds, down to none.
@@ -299,12 +299,9 @@ InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polyc
     out.mesh = unsmoothed;
     smooth_sheet(out.mesh, corner, rounds);
     out.smoothing = rounds;
-    if (rounds == 0 || !sheet_self_intersects(out.mesh)) break;
+    if (rounds == 0 || !sheet_self_intersects(out.mesh, name + " after " + std::to_string(rounds) + " smoothing rounds"))
+      break;
   }
-  const SheetTopology topo = analyze_sheet(F, V.rows());
-  const std::string problem =
-      describe_sheet_problem(topo, static_cast<int>(D.holes.size()) + 1, "the inset base surface (d = " + std::to_string(d) + ")");
-  if (!problem.empty()) throw check_failed(problem);
   return out;
 }
 

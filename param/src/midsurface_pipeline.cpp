@@ -6,6 +6,12 @@
 namespace igaprep::param {
 namespace {
 
+// The plane family tried when no principal plane works: 40 normals x 7
+// offsets (about 15 s of cuts on the pelvis), and the midsurface on at most
+// the 8 shortest valid cuts.
+constexpr int kFamilyNormals = 40, kFamilyOffsets = 7;
+constexpr std::size_t kFamilyTried = 8;
+
 // Tet mesh, field and M0 for one cut.
 void build_m0(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOptions& o, MidsurfaceResult& r) {
   std::vector<mesh::TriMesh> shells = surfaces;
@@ -17,38 +23,9 @@ void build_m0(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOption
   r.m0trim = trim_midsurface(r.tets, r.m0, static_cast<int>(surfaces.size()) - 1, r.cut.genus + 1);
 }
 
-}  // namespace
-
-MidsurfaceResult build_midsurface(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOptions& o,
-                                  const std::string& name) {
-  if (surfaces.empty()) throw bad_input("midsurface: no surfaces");
-  if (!(o.m0 > 0.0 && o.m0 < 1.0)) throw bad_input("midsurface: m0 must lie in (0, 1), got " + std::to_string(o.m0));
-  MidsurfaceResult r;
-  const mesh::TriMesh& T1 = surfaces[0];
-  if (o.cut == MidsurfaceOptions::CutKind::Automatic) {
-    bool ok = false;
-    for (const CutPlane& p : automatic_cut_planes(T1)) {
-      try {
-        r.cut = cut_by_plane(T1, p, name);
-        r.cut.source = "automatic: " + r.cut.source;
-        build_m0(surfaces, o, r);
-        ok = true;
-        break;
-      } catch (const Error& e) {
-        if (e.kind() != ErrorKind::BadInput) throw;
-        r.tried.push_back(e.what());
-      }
-    }
-    if (!ok) {
-      std::string all;
-      for (const auto& t : r.tried) all += "\n  " + t;
-      throw bad_input(name + ": no automatic cut plane gives a valid midsurface:" + all +
-                      "\ngive a plane or explicit loops in the case file's \"midsurface\" section");
-    }
-  } else {
-    r.cut = o.cut == MidsurfaceOptions::CutKind::Plane ? cut_by_plane(T1, o.plane, name) : cut_by_loops(T1, o.loops, name);
-    build_m0(surfaces, o, r);
-  }
+// Everything after the cut: the tet mesh, f, M0, M0trim and its 2D polycube.
+void complete_midsurface(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOptions& o, MidsurfaceResult& r) {
+  build_m0(surfaces, o, r);
   if (o.path_lengths) r.paths = midsurface_path_lengths(r.tets, r.f, r.cut);
 
   // Ears would put three vertices on one straight side of the domain.
@@ -66,7 +43,64 @@ MidsurfaceResult build_midsurface(const std::vector<mesh::TriMesh>& surfaces, co
     r.m0trim.m0_vertex.tail(r.m0trim.mesh.V.rows() - old).setConstant(-1);
     r.m0trim.m0_face = Eigen::VectorXi::Constant(r.m0trim.mesh.F.rows(), -1);
   }
-  r.base = base_surface(r.m0trim.mesh, r.polycube, o.m0, r.cut.genus + 1);
+}
+
+// The midsurface on an automatic cut; false (and why, in r.tried) when a
+// stage refuses it, so that the next candidate can be tried.
+bool try_automatic_cut(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOptions& o, CutLoops cut,
+                       MidsurfaceResult& r) {
+  r.cut = std::move(cut);
+  try {
+    complete_midsurface(surfaces, o, r);
+    return true;
+  } catch (const Error& e) {
+    if (e.kind() == ErrorKind::Internal) throw;
+    r.tried.push_back(r.cut.source + ": " + e.what());
+    return false;
+  }
+}
+
+// Principal planes first, then the plane family's shortest valid cuts.
+void automatic_midsurface(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOptions& o,
+                          const std::string& name, MidsurfaceResult& r) {
+  const mesh::TriMesh& T1 = surfaces[0];
+  for (const CutPlane& p : automatic_cut_planes(T1)) {
+    CutLoops cut;
+    try {
+      cut = cut_by_plane(T1, p, name);
+    } catch (const Error& e) {
+      if (e.kind() != ErrorKind::BadInput) throw;
+      r.tried.push_back(e.what());
+      continue;
+    }
+    cut.source = "automatic: " + cut.source;
+    if (try_automatic_cut(surfaces, o, std::move(cut), r)) return;
+  }
+  const PlaneFamily family = cut_plane_family(T1, kFamilyNormals, kFamilyOffsets, name);
+  r.tried.push_back("plane family: " + std::to_string(family.valid.size()) + " of " + std::to_string(family.tried) +
+                    " planes give valid loops; the others:");
+  for (const auto& line : family.refusals) r.tried.push_back("  " + line);
+  for (std::size_t i = 0; i < family.valid.size() && i < kFamilyTried; ++i)
+    if (try_automatic_cut(surfaces, o, family.valid[i], r)) return;
+  std::string all;
+  for (const auto& t : r.tried) all += "\n  " + t;
+  throw bad_input(name + ": no automatic cut plane gives a valid midsurface:" + all +
+                  "\ngive a plane or explicit loops in the case file's \"midsurface\" section");
+}
+
+}  // namespace
+
+MidsurfaceResult build_midsurface(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOptions& o,
+                                  const std::string& name) {
+  if (surfaces.empty()) throw bad_input("midsurface: no surfaces");
+  MidsurfaceResult r;
+  const mesh::TriMesh& T1 = surfaces[0];
+  if (o.cut == MidsurfaceOptions::CutKind::Automatic) {
+    automatic_midsurface(surfaces, o, name, r);
+  } else {
+    r.cut = o.cut == MidsurfaceOptions::CutKind::Plane ? cut_by_plane(T1, o.plane, name) : cut_by_loops(T1, o.loops, name);
+    complete_midsurface(surfaces, o, r);
+  }
   return r;
 }
 

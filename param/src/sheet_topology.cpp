@@ -3,26 +3,12 @@
 #include <algorithm>
 #include <cstdint>
 #include <map>
-#include <numeric>
 #include <unordered_map>
 
 #include "igaprep/core/error.h"
+#include "igaprep/core/union_find.h"
 
 namespace igaprep::param {
-namespace {
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(int n) : parent(static_cast<std::size_t>(n)) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(int a, int b) { parent[find(a)] = find(b); }
-};
-
-}  // namespace
-
 SheetTopology analyze_sheet(const Eigen::MatrixXi& F, Eigen::Index num_vertices) {
   SheetTopology s;
   s.faces = static_cast<int>(F.rows());

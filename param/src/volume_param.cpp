@@ -457,7 +457,7 @@ void add_shell_blocks(VolumeContext& ctx, const DecompositionMesh& H, const std:
                       VolumeParam& out) {
   const int m = ctx.m, n = ctx.n;
   const std::vector<SurfaceProjector> surface = surface_projectors(H);  // T1..Tn
-  Progress progress("streamlines", faces.size());
+  Progress progress("streamlines", faces.size(), ctx.options.progress);
   for (std::size_t f = 0; f < faces.size(); ++f) {
     const ShellBase& face = faces[f];
     const std::vector<StreamlineColumn> cols = trace_face_columns(ctx, face, out.streamlines);

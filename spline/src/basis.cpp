@@ -98,19 +98,41 @@ Eigen::MatrixXd basis_derivatives(const std::vector<double>& U, int p, int span,
   return M;
 }
 
-BasisTable basis_table(const std::vector<double>& U, int p, const std::vector<double>& params,
-                       int order) {
+namespace {
+
+// A table of `count` parameters, its rows not filled yet.
+BasisTable empty_table(int p, int order, std::size_t count) {
   BasisTable t;
   t.degree = p;
   t.order = order;
-  t.span.resize(params.size());
-  t.values.resize(params.size() * (order + 1) * (p + 1));
+  t.span.resize(count);
+  t.values.resize(count * (order + 1) * (p + 1));
+  return t;
+}
+
+// Row i of the table: parameter u in knot span `span`.
+void fill_row(BasisTable& t, const std::vector<double>& U, std::size_t i, int span, double u) {
+  t.span[i] = span;
+  basis_derivatives(U, t.degree, span, u, t.order, t.values.data() + i * (t.order + 1) * (t.degree + 1));
+}
+
+}  // namespace
+
+BasisTable basis_table(const std::vector<double>& U, int p, const std::vector<double>& params,
+                       int order) {
+  BasisTable t = empty_table(p, order, params.size());
+  const int n = basis_count(U, p);
   for (size_t i = 0; i < params.size(); ++i) {
-    const int n = basis_count(U, p);
     const double u = std::min(std::max(params[i], U[p]), U[n]);
-    t.span[i] = find_span(U, p, u);
-    basis_derivatives(U, p, t.span[i], u, order, t.values.data() + i * (order + 1) * (p + 1));
+    fill_row(t, U, i, find_span(U, p, u), u);
   }
+  return t;
+}
+
+BasisTable basis_table_on_span(const std::vector<double>& U, int p, int span, const std::vector<double>& params,
+                               int order) {
+  BasisTable t = empty_table(p, order, params.size());
+  for (size_t i = 0; i < params.size(); ++i) fill_row(t, U, i, span, params[i]);
   return t;
 }
 

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numeric>
 #include <tuple>
 #include <vector>
 
 #include "igaprep/core/error.h"
+#include "igaprep/core/union_find.h"
 #include "igaprep/spline/curve_surface.h"
 #include "igaprep/spline/multipatch_topology.h"
 
@@ -18,11 +18,6 @@ namespace {
 struct PointRef {
   int patch, index;
 };
-
-int find_root(std::vector<int>& parent, int i) {
-  while (parent[i] != i) i = parent[i] = parent[parent[i]];
-  return i;
-}
 
 }  // namespace
 
@@ -51,8 +46,7 @@ int stitch_control_points(MultiPatch& mp, double tol, double* max_move) {
                static_cast<long long>(std::floor(x.z() / tol))};
   };
   for (int i = 0; i < static_cast<int>(refs.size()); ++i) cells[key(point(refs[i]))].push_back(i);
-  std::vector<int> parent(refs.size());
-  std::iota(parent.begin(), parent.end(), 0);
+  UnionFind close(static_cast<int>(refs.size()));  // the root, the smallest index, is where a set moves to
   for (int i = 0; i < static_cast<int>(refs.size()); ++i) {
     const Eigen::Vector3d x = point(refs[i]);
     const auto [kx, ky, kz] = key(x);
@@ -62,16 +56,13 @@ int stitch_control_points(MultiPatch& mp, double tol, double* max_move) {
           const auto it = cells.find(Key{kx + dx, ky + dy, kz + dz});
           if (it == cells.end()) continue;
           for (int j : it->second)
-            if (j > i && (point(refs[j]) - x).norm() <= tol) {
-              const int a = find_root(parent, i), b = find_root(parent, j);
-              if (a != b) parent[std::max(a, b)] = std::min(a, b);
-            }
+            if (j > i && (point(refs[j]) - x).norm() <= tol) close.unite(i, j);
         }
   }
   int moved = 0;
   double largest = 0.0;
   for (int i = 0; i < static_cast<int>(refs.size()); ++i) {
-    const int r = find_root(parent, i);
+    const int r = close.find(i);
     if (r == i) continue;
     const Eigen::Vector3d target = point(refs[r]);
     const double d = (point(refs[i]) - target).norm();

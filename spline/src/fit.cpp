@@ -2,7 +2,6 @@
 #include "igaprep/spline/fit.h"
 
 #include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
@@ -11,6 +10,7 @@
 
 #include "igaprep/core/error.h"
 #include "igaprep/spline/basis.h"
+#include "igaprep/spline/gauss_legendre.h"
 #include "igaprep/spline/knot_vector.h"
 
 namespace igaprep::spline {
@@ -238,27 +238,18 @@ Surface fit_grid(const std::array<int, 2>& degrees, const std::array<std::vector
 
 namespace {
 
-// Gauss-Legendre nodes and weights on [-1, 1] (Golub-Welsch).
-void gauss_legendre(int q, Eigen::VectorXd* x, Eigen::VectorXd* w) {
-  Mat J = Mat::Zero(q, q);
-  for (int k = 1; k < q; ++k) J(k, k - 1) = J(k - 1, k) = k / std::sqrt(4.0 * k * k - 1.0);
-  Eigen::SelfAdjointEigenSolver<Mat> es(J);
-  *x = es.eigenvalues();
-  *w = 2.0 * es.eigenvectors().row(0).transpose().array().square();
-}
-
 // 1-D Gram matrix of k-th derivatives, int N_i^(k) N_j^(k) du, sparse.
 Eigen::SparseMatrix<double> derivative_gram(const std::vector<double>& U, int p, int k) {
   const int n = basis_count(U, p);
-  Eigen::VectorXd gx, gw;
-  gauss_legendre(p + 1, &gx, &gw);
+  Eigen::VectorXd gx, gw;  // on [0, 1]
+  gauss_legendre(p + 1, gx, gw);
   Mat G = Mat::Zero(n, n);
   const std::vector<double> br = unique_knots(U);
   std::vector<double> ders(static_cast<size_t>(k + 1) * (p + 1));
   for (size_t e = 0; e + 1 < br.size(); ++e) {
-    const double a = br[e], b = br[e + 1], h = 0.5 * (b - a);
+    const double a = br[e], b = br[e + 1], h = b - a;
     for (int q = 0; q <= p; ++q) {
-      const double u = a + h * (gx[q] + 1.0);
+      const double u = a + h * gx[q];
       const int span = find_span(U, p, u);
       basis_derivatives(U, p, span, u, k, ders.data());
       const double* Nk = ders.data() + k * (p + 1);

@@ -4,10 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numeric>
 #include <sstream>
 
 #include "igaprep/core/error.h"
+#include "igaprep/core/union_find.h"
 #include "igaprep/spline/curve_surface.h"
 #include "igaprep/spline/knot_vector.h"
 
@@ -208,28 +208,18 @@ GlobalNumbering global_numbering(const MultiPatch& mp) {
   GlobalNumbering g;
   std::vector<long> offset(mp.patches.size() + 1, 0);
   for (size_t p = 0; p < mp.patches.size(); ++p) offset[p + 1] = offset[p] + mp.patches[p].control_points.rows();
-  std::vector<long> parent(offset.back());
-  std::iota(parent.begin(), parent.end(), 0L);
-  auto find = [&](long x) {
-    while (parent[x] != x) {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
-    }
-    return x;
-  };
+  UnionFind copies(static_cast<int>(offset.back()));  // the copies of one control point
   for (const Interface& itf : mp.interfaces)
-    for (const auto& pr : interface_point_pairs(mp, itf)) {
-      const long a = find(offset[itf.patch_a] + pr.first), b = find(offset[itf.patch_b] + pr.second);
-      if (a != b) parent[std::max(a, b)] = std::min(a, b);  // smallest index is the root
-    }
-  std::vector<int> number(parent.size(), -1);
+    for (const auto& pr : interface_point_pairs(mp, itf))
+      copies.unite(static_cast<int>(offset[itf.patch_a] + pr.first), static_cast<int>(offset[itf.patch_b] + pr.second));
+  std::vector<int> number(static_cast<std::size_t>(copies.size()), -1);
   g.global.resize(mp.patches.size());
   g.patch_offset.resize(mp.patches.size());
   for (size_t p = 0; p < mp.patches.size(); ++p) {
     g.patch_offset[p] = g.count;
     g.global[p].resize(mp.patches[p].control_points.rows());
     for (long i = 0; i < mp.patches[p].control_points.rows(); ++i) {
-      const long r = find(offset[p] + i);
+      const int r = copies.find(static_cast<int>(offset[p] + i));
       if (number[r] < 0) number[r] = g.count++;
       g.global[p][i] = number[r];
     }

@@ -5,14 +5,13 @@
 #include <limits>
 #include <string>
 
-#include <Eigen/LU>
-
 #include "igaprep/core/error.h"
 #include "igaprep/spline/basis.h"
 #include "igaprep/spline/curve_surface.h"
 #include "igaprep/spline/evaluate.h"
 #include "igaprep/spline/knot_vector.h"
 #include "igaprep/spline/multipatch_topology.h"
+#include "igaprep/spline/scaled_jacobian.h"
 
 namespace igaprep::spline {
 
@@ -20,13 +19,12 @@ namespace {
 
 constexpr int kFree = -1, kFixed = -2;
 
-// Scaled Jacobian (det over the product of the column lengths); +infinity
-// where a column (nearly) vanishes: a collapsed side, degenerate, not folded.
+// The scaled Jacobian this step raises (spline::scaled_jacobian, the one the
+// check reports), or +infinity where J is degenerate (a collapsed side): the
+// check reports 0 there, but no control point can raise it, so the
+// optimizer leaves those points out of every minimum.
 double scaled(const Eigen::Matrix3d& J) {
-  const double a = J.col(0).norm(), b = J.col(1).norm(), c = J.col(2).norm();
-  const double hi = std::max({a, b, c});
-  if (!(std::min({a, b, c}) > 1e-9 * hi)) return std::numeric_limits<double>::infinity();
-  return J.determinant() / (a * b * c);
+  return degenerate_jacobian(J) ? std::numeric_limits<double>::infinity() : scaled_jacobian(J);
 }
 
 // One basis function's value and derivative at a sample point of one direction.
@@ -113,7 +111,6 @@ class Optimizer {
   Optimizer(MultiPatch& mp, const std::vector<int>& points) : mp_(mp) {
     for (std::size_t pi = 0; pi < mp.patches.size(); ++pi) samples_.push_back(sample_patch(mp.patches[pi], points[pi]));
   }
-
 
   // Calls f(J at the point after moving by delta) for every sample point in
   // the support of the copies.

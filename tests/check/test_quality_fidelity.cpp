@@ -10,6 +10,7 @@
 #include "igaprep/iga_check/jacobian_certificate.h"
 #include "igaprep/iga_check/quality_metrics.h"
 #include "igaprep/iga_check/topology_checks.h"
+#include "igaprep/mesh/enclosed_volume.h"
 #include "igaprep/spline/refine.h"
 
 using namespace igaprep;
@@ -133,7 +134,7 @@ TEST(Topology, SphereShellWatertightVolumesAndCertificate) {
   // The inscribed meshes enclose a little less: chord error of level 4, < 0.5 %.
   EXPECT_GT(t.regions[0].relative_difference, 0.0);
   EXPECT_LT(t.regions[0].relative_difference, 5e-3);
-  EXPECT_NEAR(std::abs(enclosed_volume(surfaces[0])), 4.0 / 3.0 * M_PI, 1e-2);
+  EXPECT_NEAR(std::abs(mesh::enclosed_volume(surfaces[0])), 4.0 / 3.0 * M_PI, 1e-2);
 
   // A side left out breaks watertightness and is named.
   auto broken = mp;

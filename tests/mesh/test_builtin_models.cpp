@@ -14,7 +14,7 @@ using igaprep::models::make_builtin_model;
 class BuiltinModel : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BuiltinModel, SurfacesAreValidWithExpectedGenusAndSize) {
-  auto model = make_builtin_model(GetParam());
+  const auto model = make_builtin_model(GetParam());
   long faces = 0;
   for (std::size_t i = 0; i < model.surfaces.size(); ++i) {
     auto report = igaprep::mesh::check_surface(model.surfaces[i], GetParam() + "/" + model.labels[i]);
@@ -33,7 +33,7 @@ TEST_P(BuiltinModel, SurfacesAreValidWithExpectedGenusAndSize) {
 TEST_P(BuiltinModel, CommittedFilesMatchTheGenerator) {
   auto model = make_builtin_model(GetParam());
   for (std::size_t i = 0; i < model.surfaces.size(); ++i) {
-    const std::string file = igaprep::models::builtin_models_dir() + "/" + GetParam() + "/" + model.labels[i] + ".off";
+    const std::string file = std::string(IGAPREP_SOURCE_DIR) + "/models/" + GetParam() + "/" + model.labels[i] + ".off";
     auto committed = igaprep::mesh::read_surface(file);
     ASSERT_EQ(committed.F.rows(), model.surfaces[i].F.rows()) << file;
     ASSERT_EQ(committed.V.rows(), model.surfaces[i].V.rows()) << file;
@@ -58,8 +58,8 @@ TEST(BuiltinModels, TwoMaterialModelsAreNested) {
 TEST(BuiltinModels, ExactEllipsoidVolumeIsApproachedFromBelow) {
   // The inscribed polyhedron of the 1.0 x 0.8 x 0.6 ellipsoid: its volume is
   // below 4/3 pi abc and within 1 % of it at 5120 triangles.
-  auto model = make_builtin_model("sphere2");
-  auto report = igaprep::mesh::check_surface(model.surfaces[0], "sphere2/outer");
+  const auto model = make_builtin_model("sphere2");
+  const auto report = igaprep::mesh::check_surface(model.surfaces[0], "sphere2/outer");
   const double exact = 4.0 / 3.0 * M_PI * 1.0 * 0.8 * 0.6;
   EXPECT_LT(report.volume, exact);
   EXPECT_NEAR(report.volume, exact, 0.01 * exact);

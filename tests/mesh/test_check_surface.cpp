@@ -5,11 +5,15 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <utility>
 
 #include "igaprep/core/error.h"
 #include "igaprep/mesh/check_surface.h"
+#include "igaprep/mesh/orient_outward.h"
 #include "igaprep/mesh/read_surface.h"
+#include "igaprep/mesh/remove_unused_vertices.h"
 
+using igaprep::mesh::check_and_repair_surface;
 using igaprep::mesh::check_surface;
 using igaprep::mesh::load_checked_surface;
 using igaprep::mesh::read_surface;
@@ -25,7 +29,7 @@ bool contains(const std::string& s, const std::string& part) { return s.find(par
 // Checks `name`: exactly one error, containing every word in `words` and the
 // file's name; load_checked_surface throws it as bad input.
 SurfaceReport expect_defect(const std::string& name, const std::vector<std::string>& words, size_t errors = 1) {
-  TriMesh m = read_surface(data(name));
+  const TriMesh m = read_surface(data(name));
   SurfaceReport r = check_surface(m, data(name));
   EXPECT_FALSE(r.ok()) << name;
   EXPECT_EQ(r.errors.size(), errors) << name << ":\n" << igaprep::mesh::format_report(r);
@@ -87,7 +91,7 @@ TEST(CheckSurface, CubeFromQuads) {
 }
 
 TEST(CheckSurface, TorusHasGenusOne) {
-  TriMesh t = grid_torus(24, 12);
+  const TriMesh t = grid_torus(24, 12);
   const SurfaceReport r = check_surface(t, "torus");
   EXPECT_TRUE(r.ok());
   EXPECT_EQ(r.genus, 1);
@@ -146,17 +150,31 @@ TEST(CheckSurfaceDefects, MoreThanOneComponent) {
 TEST(CheckSurfaceDefects, NaNInMemoryMesh) {
   TriMesh m = read_surface(data("tetra_ascii.ply"));
   m.V(2, 1) = std::nan("");
-  const SurfaceReport r = check_surface(m, "made.ply");
+  const SurfaceReport r = check_surface(std::as_const(m), "made.ply");
   ASSERT_EQ(r.errors.size(), 1u);
   EXPECT_TRUE(contains(r.errors[0], "made.ply: 1 vertices with NaN or infinite coordinates, e.g. vertex 2"));
-  TriMesh empty;
-  EXPECT_TRUE(contains(check_surface(empty, "e.obj").errors.at(0), "e.obj: no faces"));
+  EXPECT_TRUE(contains(check_surface(TriMesh{}, "e.obj").errors.at(0), "e.obj: no faces"));
+}
+
+// The check only reports an inward surface; the repair turns it.
+TEST(CheckSurface, InwardSurfaceIsReportedNotChanged) {
+  const TriMesh m = read_surface(data("inward.off"));
+  const SurfaceReport r = check_surface(m, "inward.off");
+  EXPECT_TRUE(r.ok());
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_EQ(r.warnings[0], "inward.off: surface is oriented inward (normals point into the solid)");
+  EXPECT_EQ(r.inward_pieces, std::vector<int>{0});
+  EXPECT_NEAR(r.volume, 1.0 / 6.0, 1e-15);  // counted outward
+  TriMesh turned = m;
+  EXPECT_EQ(igaprep::mesh::orient_outward(turned), std::vector<int>{0});
+  for (int f = 0; f < m.F.rows(); ++f) EXPECT_EQ(turned.F.row(f), Eigen::RowVector3i(m.F(f, 0), m.F(f, 2), m.F(f, 1)));
+  EXPECT_TRUE(igaprep::mesh::orient_outward(turned).empty());  // nothing left to turn
 }
 
 TEST(CheckSurface, InwardSurfaceIsReoriented) {
   TriMesh m = read_surface(data("inward.off"));
   const TriMesh before = m;
-  const SurfaceReport r = check_surface(m, "inward.off");
+  const SurfaceReport r = check_and_repair_surface(m, "inward.off");
   EXPECT_TRUE(r.ok());
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_TRUE(contains(r.warnings[0], "inward.off: surface is oriented inward")) << r.warnings[0];
@@ -164,15 +182,30 @@ TEST(CheckSurface, InwardSurfaceIsReoriented) {
   EXPECT_NEAR(r.volume, 1.0 / 6.0, 1e-15);
   for (int f = 0; f < m.F.rows(); ++f) EXPECT_EQ(m.F.row(f), Eigen::RowVector3i(before.F(f, 0), before.F(f, 2), before.F(f, 1)));
   // Checking again: nothing left to fix.
-  const SurfaceReport again = check_surface(m, "inward.off");
+  const SurfaceReport again = check_surface(std::as_const(m), "inward.off");
   EXPECT_TRUE(again.warnings.empty());
   EXPECT_NEAR(again.volume, 1.0 / 6.0, 1e-15);
+}
+
+TEST(CheckSurface, UnreferencedVerticesAreReportedNotRemoved) {
+  const TriMesh m = read_surface(data("unreferenced_vertex.off"));
+  const SurfaceReport r = check_surface(m, "u.off");
+  EXPECT_TRUE(r.ok());
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_EQ(r.warnings[0], "u.off: 1 vertices are used by no face");
+  EXPECT_EQ(r.unused_vertices, 1);
+  EXPECT_EQ(r.vertices, 4);
+  TriMesh pruned = m;
+  EXPECT_EQ(igaprep::mesh::remove_unused_vertices(pruned), 1);
+  EXPECT_EQ(pruned.V.rows(), 4);
+  EXPECT_EQ(check_surface(std::as_const(pruned), "u.off").warnings.size(), 0u);
+  EXPECT_EQ(igaprep::mesh::remove_unused_vertices(pruned), 0);
 }
 
 TEST(CheckSurface, UnreferencedVerticesAreRemoved) {
   TriMesh m = read_surface(data("unreferenced_vertex.off"));
   ASSERT_EQ(m.V.rows(), 5);
-  const SurfaceReport r = check_surface(m, "u.off");
+  const SurfaceReport r = check_and_repair_surface(m, "u.off");
   EXPECT_TRUE(r.ok());
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_TRUE(contains(r.warnings[0], "1 vertices used by no face were removed"));

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "igaprep/mesh/enclosed_volume.h"
 #include "igaprep/mesh/marching_tets.h"
 #include "igaprep/mesh/tetrahedralize.h"
 #include "igaprep/models/shapes.h"
@@ -155,11 +156,7 @@ TEST(MarchingTets, DistanceInBallGivesClosedSphere) {
   EXPECT_EQ(iso.mesh.V.rows() - edges + F.rows(), 2);  // Euler characteristic of a sphere
 
   // Normals towards increasing |x| = outward: positive enclosed volume near the ball's.
-  double vol = 0;
-  for (Eigen::Index f = 0; f < F.rows(); ++f) {
-    const Eigen::Vector3d a = iso.mesh.V.row(F(f, 0)), b = iso.mesh.V.row(F(f, 1)), c = iso.mesh.V.row(F(f, 2));
-    vol += a.dot(b.cross(c)) / 6.0;
-  }
+  const double vol = igaprep::mesh::enclosed_volume(iso.mesh);
   const double ball = 4.0 / 3.0 * M_PI * r * r * r;
   EXPECT_NEAR(vol, ball, 0.05 * ball);
   for (Eigen::Index i = 0; i < iso.mesh.V.rows(); ++i) EXPECT_NEAR(iso.mesh.V.row(i).norm(), r, 0.05 * r);

@@ -29,7 +29,7 @@ bool contains(const std::string& s, const std::string& part) { return s.find(par
 }  // namespace
 
 TEST(Nesting, IcosphereIsAValidOutwardSurface) {
-  TriMesh s = icosphere(1.0, Eigen::Vector3d::Zero(), 2);
+  const TriMesh s = icosphere(1.0, Eigen::Vector3d::Zero(), 2);
   const auto r = igaprep::mesh::check_surface(s, "sphere");
   EXPECT_TRUE(r.ok());
   EXPECT_TRUE(r.warnings.empty());  // already outward: the tests below use the orientation as made

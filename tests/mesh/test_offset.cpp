@@ -4,10 +4,8 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/intersection.h>
 #include <CGAL/Side_of_triangle_mesh.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <cmath>
 #include <cstdio>
@@ -18,32 +16,17 @@
 
 #include "igaprep/core/error.h"
 #include "igaprep/mesh/check_surface.h"
+#include "igaprep/mesh/enclosed_volume.h"
 #include "igaprep/mesh/offset_surface.h"
 #include "igaprep/mesh/read_surface.h"
+#include "igaprep/mesh/to_surface_mesh.h"
 #include "igaprep/models/shapes.h"
 
 namespace {
 
 using igaprep::mesh::TriMesh;
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using SM = CGAL::Surface_mesh<K::Point_3>;
-
-SM to_sm(const TriMesh& m) {
-  SM sm;
-  std::vector<SM::Vertex_index> v;
-  for (Eigen::Index i = 0; i < m.V.rows(); ++i) v.push_back(sm.add_vertex(K::Point_3(m.V(i, 0), m.V(i, 1), m.V(i, 2))));
-  for (Eigen::Index f = 0; f < m.F.rows(); ++f) sm.add_face(v[m.F(f, 0)], v[m.F(f, 1)], v[m.F(f, 2)]);
-  return sm;
-}
-
-double volume(const TriMesh& m) {
-  double vol = 0;
-  for (Eigen::Index f = 0; f < m.F.rows(); ++f) {
-    const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
-    vol += a.dot(b.cross(c)) / 6.0;
-  }
-  return vol;
-}
+using K = igaprep::mesh::CgalKernel;
+using SM = igaprep::mesh::SurfaceMesh;
 
 double mean_edge(const TriMesh& m) {
   double s = 0;
@@ -61,14 +44,13 @@ TEST(Offset, SphereShrinksByD) {
   const TriMesh inner = igaprep::mesh::offset_inward(sphere, {0.2});
   ASSERT_GT(inner.F.rows(), 100);
   for (Eigen::Index i = 0; i < inner.V.rows(); ++i) EXPECT_NEAR(inner.V.row(i).norm(), 0.8, 0.8 * 0.02) << "vertex " << i;
-  TriMesh copy = inner;
-  const auto report = igaprep::mesh::check_surface(copy, "offset sphere");
+  const auto report = igaprep::mesh::check_surface(inner, "offset sphere");
   EXPECT_TRUE(report.ok());
   EXPECT_EQ(report.genus, 0);
   EXPECT_EQ(report.components, 1);
   EXPECT_EQ(report.self_intersections, 0);
   // Outward orientation: positive enclosed volume close to the ball's.
-  EXPECT_NEAR(volume(inner), 4.0 / 3.0 * M_PI * 0.512, 0.03 * 4.0 / 3.0 * M_PI * 0.512);
+  EXPECT_NEAR(igaprep::mesh::enclosed_volume(inner), 4.0 / 3.0 * M_PI * 0.512, 0.03 * 4.0 / 3.0 * M_PI * 0.512);
   // Similar triangle size (default edge length = the input's mean).
   EXPECT_NEAR(mean_edge(inner), mean_edge(sphere), 0.35 * mean_edge(sphere));
 }
@@ -102,19 +84,19 @@ TEST(Offset, PelvisCorticalShell) {
   const double D = 0.8;
   const TriMesh inner = igaprep::mesh::offset_inward(outer, {D});
 
-  TriMesh copy = inner;
-  const auto report = igaprep::mesh::check_surface(copy, "pelvis offset");
+  const auto report = igaprep::mesh::check_surface(inner, "pelvis offset");
   EXPECT_TRUE(report.ok()) << igaprep::mesh::format_report(report);
   EXPECT_TRUE(report.closed);
   EXPECT_TRUE(report.manifold);
   EXPECT_EQ(report.self_intersections, 0);
   EXPECT_EQ(report.genus, 2);
   EXPECT_EQ(report.components, 1);
-  EXPECT_GT(volume(inner), 0);
+  EXPECT_GT(igaprep::mesh::enclosed_volume(inner), 0);
   EXPECT_NEAR(mean_edge(inner), mean_edge(outer), 0.35 * mean_edge(outer));
 
   // Nested: every vertex inside the outer surface, and the surfaces do not meet.
-  SM outer_sm = to_sm(outer), inner_sm = to_sm(inner);
+  SM outer_sm = igaprep::mesh::to_surface_mesh(outer, "pelvis"),
+     inner_sm = igaprep::mesh::to_surface_mesh(inner, "pelvis offset");
   CGAL::Side_of_triangle_mesh<SM, K> side(outer_sm);
   int outside = 0;
   for (Eigen::Index i = 0; i < inner.V.rows(); ++i)

@@ -14,6 +14,7 @@
 #include <Eigen/Geometry>
 
 #include "igaprep/core/error.h"
+#include "igaprep/mesh/enclosed_volume.h"
 #include "igaprep/mesh/read_surface.h"
 #include "igaprep/mesh/write_surface.h"
 
@@ -24,15 +25,6 @@ using igaprep::mesh::write_surface;
 namespace {
 
 std::string data(const std::string& name) { return std::string(IGAPREP_TEST_DATA_DIR) + "/mesh/" + name; }
-
-double signed_volume(const TriMesh& m) {
-  double v = 0;
-  for (int f = 0; f < m.F.rows(); ++f) {
-    const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
-    v += a.dot(b.cross(c)) / 6.0;
-  }
-  return v;
-}
 
 // Expects read_surface(path) to throw a bad-input error whose message names
 // the file and contains `words`.
@@ -115,7 +107,7 @@ TEST_P(ReadGoodFile, CountsVolumeAndBox) {
   const TriMesh m = read_surface(data(g.name));
   EXPECT_EQ(m.V.rows(), g.vertices);
   EXPECT_EQ(m.F.rows(), g.faces);
-  EXPECT_NEAR(signed_volume(m), g.volume, 1e-12);
+  EXPECT_NEAR(igaprep::mesh::enclosed_volume(m), g.volume, 1e-12);
   EXPECT_NEAR(m.V.minCoeff(), 0.0, 0.0);
   EXPECT_NEAR(m.V.maxCoeff(), 1.0, 0.0);
   EXPECT_GE(m.F.minCoeff(), 0);

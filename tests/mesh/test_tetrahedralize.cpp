@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "igaprep/core/error.h"
+#include "igaprep/mesh/enclosed_volume.h"
 #include "igaprep/mesh/offset_surface.h"
 #include "igaprep/mesh/read_surface.h"
 #include "igaprep/mesh/tetrahedralize.h"
@@ -21,15 +22,6 @@ namespace {
 
 using igaprep::mesh::TetMesh;
 using igaprep::mesh::TriMesh;
-
-double surface_volume(const TriMesh& m) {
-  double vol = 0;
-  for (Eigen::Index f = 0; f < m.F.rows(); ++f) {
-    const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
-    vol += a.dot(b.cross(c)) / 6.0;
-  }
-  return vol;
-}
 
 double tet_volume(const TetMesh& m, Eigen::Index t) {
   const Eigen::Vector3d a = m.V.row(m.T(t, 0)), b = m.V.row(m.T(t, 1)), c = m.V.row(m.T(t, 2)), d = m.V.row(m.T(t, 3));
@@ -118,7 +110,8 @@ void check_tet_mesh(const TetMesh& tm, const std::vector<TriMesh>& surfaces, con
   std::vector<double> mat_vol(n, 0.0);
   for (Eigen::Index t = 0; t < tm.T.rows(); ++t) mat_vol[tm.material(t)] += tet_volume(tm, t);
   for (int i = 0; i < n; ++i) {
-    const double expected = surface_volume(surfaces[i]) - (i + 1 < n ? surface_volume(surfaces[i + 1]) : 0.0);
+    const double expected = igaprep::mesh::enclosed_volume(surfaces[i]) -
+                            (i + 1 < n ? igaprep::mesh::enclosed_volume(surfaces[i + 1]) : 0.0);
     EXPECT_NEAR(mat_vol[i], expected, 1e-9 * std::abs(expected)) << "material " << i;
   }
 }

@@ -148,3 +148,26 @@ TEST(CutLoops, WrongCutsAreRefusedWithTheirReason) {
   msg = error_of([&] { cut_by_loops(T1, {ring_around(0)}, "ring2 outer"); });
   EXPECT_NE(msg.find("needs 2 (g + 1) loops"), std::string::npos) << msg;
 }
+
+// The plane family on the genus-3 frame: every valid cut has g + 1 = 4 valid
+// loops, shortest total length first; the refusals account for every other
+// plane, grouped by kind ("N x reason").
+TEST(CutLoops, PlaneFamilyGivesValidCutsShortestFirst) {
+  const auto model = models::make_builtin_model("torus3");
+  const PlaneFamily family = cut_plane_family(model.surfaces[0], 12, 5);
+  EXPECT_EQ(family.tried, 60);
+  ASSERT_GT(family.valid.size(), 0u);
+  int refused = 0;
+  for (const auto& line : family.refusals) {
+    refused += std::stoi(line.substr(0, line.find(" x ")));
+    EXPECT_EQ(line.find_first_of("0123456789", line.find(" x ")), std::string::npos) << "numbers taken out: " << line;
+  }
+  EXPECT_EQ(refused + static_cast<int>(family.valid.size()), family.tried);
+  double previous = 0.0;
+  for (const auto& cut : family.valid) {
+    EXPECT_EQ(cut.loops.size(), 4u);
+    EXPECT_GE(loops_length(cut), previous);
+    previous = loops_length(cut);
+    expect_valid_loops(cut);
+  }
+}

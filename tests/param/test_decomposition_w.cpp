@@ -24,7 +24,7 @@ TEST_P(WFieldTest, BoundaryValuesRangeAndMaximumPrinciple) {
   // Dirichlet values at every vertex of every surface.
   const double expected[3] = {0.0, 0.5, 1.0};
   for (int k = 0; k <= n; ++k) {
-    const Eigen::Index nk = k < n ? model.surfaces[k].V.rows() : c.mid->result.base.mesh.V.rows();
+    const Eigen::Index nk = k < n ? model.surfaces[k].V.rows() : c.base.m.mesh.V.rows();
     double err = 0.0;
     for (Eigen::Index i = 0; i < nk; ++i)
       err = std::max(err, std::abs(W.w(decomposition_vertex(H, k, static_cast<int>(i))) - expected[k]));

@@ -11,8 +11,8 @@
 
 #include "igaprep/iga_check/elasticity_evaluate.h"
 #include "igaprep/iga_check/elasticity_material.h"
-#include "igaprep/iga_check/elasticity_quadrature.h"
 #include "igaprep/iga_check/elasticity_solve.h"
+#include "igaprep/spline/gauss_legendre.h"
 #include "solve_models.h"
 
 using namespace igaprep;
@@ -152,7 +152,7 @@ TEST(SolveManufactured, ExactFieldNormMatchesIndependentQuadrature) {
   const auto err = iga_check::elasticity_errors(mp, exact, exact_grad, 6);
   // Polar coordinates, midpoint-free Gauss rule with many points.
   Eigen::VectorXd gp, gw;
-  iga_check::gauss_legendre(24, gp, gw);
+  spline::gauss_legendre(24, gp, gw);
   double l2 = 0;
   for (int i = 0; i < 24; ++i)
     for (int j = 0; j < 24; ++j)

@@ -9,7 +9,6 @@
 #include <vector>
 
 #include <Eigen/Core>
-#include <Eigen/LU>
 
 #include "igaprep/core/error.h"
 #include "igaprep/spline/curve_surface.h"
@@ -18,6 +17,7 @@
 #include "igaprep/spline/knot_vector.h"
 #include "igaprep/spline/multipatch_topology.h"
 #include "igaprep/spline/optimize_jacobian.h"
+#include "igaprep/spline/scaled_jacobian.h"
 
 namespace {
 
@@ -56,7 +56,7 @@ double dense_min(const Patch& P) {
     for (double v : t)
       for (double u : t) {
         const Eigen::Matrix3d J = evaluate_jacobian(P, Eigen::Vector3d(u, v, w));
-        lo = std::min(lo, J.determinant() / (J.col(0).norm() * J.col(1).norm() * J.col(2).norm()));
+        lo = std::min(lo, scaled_jacobian(J));
       }
   return lo;
 }

@@ -1,35 +1,34 @@
 #pragma once
-// Progress of a long step on stderr: a redrawn bar when stderr is a terminal,
-// nothing per tick otherwise (the caller prints one summary line per stage).
-#include <chrono>
+// Progress of a long step, reported to a callback the caller supplies (the
+// CLI draws a bar from it, a test records it, Python may ignore it). The
+// library never prints: without a callback nothing happens.
 #include <cstddef>
+#include <functional>
 #include <string>
 
 namespace igaprep {
 
+// (task, done, total): `done` of `total` units of the named task.
+using ProgressCallback = std::function<void(const std::string& task, std::size_t done, std::size_t total)>;
+
+// Calls the callback when the finished share changes by a whole percent (so
+// a caller may update it for every unit) and once more at the end.
 class Progress {
  public:
-  Progress(std::string label, std::size_t total);
+  Progress(std::string task, std::size_t total, ProgressCallback callback);
   ~Progress();
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
 
-  // Sets the number of finished units; cheap to call often.
-  void update(std::size_t done);
-  void finish();
-  double elapsed_seconds() const;
-
-  // True when stderr is a terminal (and IGAPREP_NO_PROGRESS is unset).
-  static bool enabled();
+  void update(std::size_t done);  // cheap to call often
+  void finish();                  // reports total of total (once)
 
  private:
-  void draw(std::size_t done);
-  std::string label_;
+  std::string task_;
   std::size_t total_;
-  std::size_t last_drawn_percent_ = static_cast<std::size_t>(-1);
-  bool active_;
+  ProgressCallback callback_;
+  std::size_t last_percent_ = static_cast<std::size_t>(-1);
   bool finished_ = false;
-  std::chrono::steady_clock::time_point start_;
 };
 
 }  // namespace igaprep

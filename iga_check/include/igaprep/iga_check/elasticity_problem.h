@@ -5,6 +5,8 @@
 #include <Eigen/Core>
 #include <array>
 #include <functional>
+
+#include "igaprep/core/progress.h"
 #include <string>
 #include <vector>
 
@@ -61,6 +63,7 @@ struct ElasticityOptions {
   LinearSolver solver = LinearSolver::Cholesky;
   double cg_tolerance = 1e-8;   // relative residual for LinearSolver::ConjugateGradient
   int cg_max_iterations = 0;    // 0: 10 * unknowns
+  ProgressCallback progress;    // elements assembled
 };
 
 struct ElasticityReport {

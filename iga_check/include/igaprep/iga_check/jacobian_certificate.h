@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "igaprep/core/progress.h"
 #include "igaprep/iga_check/bernstein3.h"
 #include "igaprep/spline/bezier_extraction.h"
 #include "igaprep/spline/multipatch.h"
@@ -45,6 +46,7 @@ struct CertifyOptions {
   int max_depth = 24;           // splits along any path (about 8 per direction)
   int max_boxes = 4000;         // boxes examined per element
   double zero_tolerance = 1e-12;
+  ProgressCallback progress;    // patches certified (certify_model)
 };
 
 struct ElementCertificate {

@@ -2,17 +2,19 @@
 // Pointwise quality of the parameterization at a dense set of points per
 // element: in each direction the union of a regular sub-grid (corners
 // included) and the p+1 Gauss points, taken as a tensor grid. Per point: det J, the scaled Jacobian det J / (|x_u| |x_v| |x_w|)
-// (1 for orthogonal columns, <= 0 where inverted) and the Frobenius condition
+// (spline::scaled_jacobian: 1 for orthogonal columns, <= 0 where inverted, 0
+// where a column vanishes) and the Frobenius condition
 // number |J|_F |J^-1|_F / 3 (1 for a conformal J, infinite where singular).
 #include <Eigen/Core>
 #include <array>
 #include <vector>
 
 #include "igaprep/spline/multipatch.h"
+#include "igaprep/spline/scaled_jacobian.h"
 
 namespace igaprep::iga_check {
 
-double scaled_jacobian(const Eigen::Matrix3d& J);
+using spline::scaled_jacobian;  // the optimizer's too (spline/optimize_jacobian.h)
 double condition_number(const Eigen::Matrix3d& J);  // +infinity when J is singular
 
 struct QualityOptions {

@@ -104,6 +104,12 @@ CheckReport build_check_report(const spline::MultiPatch& mp, const std::vector<m
                                const std::vector<std::string>& surface_labels = {},
                                const CheckOptions& options = {}, const std::string& model = "");
 
+// Element counts of the whole model: the sums of the patches' counts.
+struct ElementTotals {
+  long elements = 0, positive = 0, negative = 0, degenerate = 0, undecided = 0;
+};
+ElementTotals element_totals(const CheckReport& r);
+
 std::string report_json(const CheckReport& r);  // pretty-printed, deterministic
 std::string report_html(const CheckReport& r);
 

@@ -15,9 +15,6 @@
 
 namespace igaprep::iga_check {
 
-// Signed volume enclosed by a closed, outward-oriented triangle mesh.
-double enclosed_volume(const mesh::TriMesh& m);
-
 // Generalized winding number of a closed mesh at x (1 inside, 0 outside).
 double winding_number(const mesh::TriMesh& m, const Eigen::Vector3d& x);
 

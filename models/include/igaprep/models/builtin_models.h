@@ -1,6 +1,6 @@
 #pragma once
 // The built-in models (sphere2, ring2, torus3): nested closed surfaces made by
-// deterministic code, and the folder of their committed case files.
+// deterministic code.
 #include <string>
 #include <vector>
 
@@ -30,10 +30,5 @@ std::string default_model_name();
 // Generates the surfaces of a built-in model; throws Error(BadInput) for an
 // unknown name.
 BuiltinModel make_builtin_model(const std::string& name);
-
-// Folder holding models/<name>/case.json and the generated surfaces (the
-// source tree's models/ folder).
-std::string builtin_models_dir();
-std::string builtin_case_path(const std::string& name);
 
 }  // namespace igaprep::models

@@ -56,6 +56,22 @@ CutLoops cut_by_loops(const mesh::TriMesh& T1, const std::vector<std::vector<int
 // smallest axis offset by +-10 % of T1's extent along it.
 std::vector<CutPlane> automatic_cut_planes(const mesh::TriMesh& T1);
 
+// Candidates beyond the principal planes: `normals` directions spread evenly
+// over a hemisphere (a Fibonacci lattice), each at `offsets` positions evenly
+// inside T1's extent along it. Output: the valid cuts, shortest total loop
+// length first (short loops cut a solid across its narrow parts, as a person
+// would); `tried` counts the planes and `refusals` sums up why the others
+// failed (one line per kind of reason, with its count).
+struct PlaneFamily {
+  std::vector<CutLoops> valid;
+  int tried = 0;
+  std::vector<std::string> refusals;
+};
+PlaneFamily cut_plane_family(const mesh::TriMesh& T1, int normals, int offsets, const std::string& name = "T1");
+
+// Total length of a cut's loops.
+double loops_length(const CutLoops& cut);
+
 // The first candidate plane whose cut is valid. Throws bad_input listing why
 // each candidate failed and suggesting a plane or explicit loops.
 CutLoops cut_automatic(const mesh::TriMesh& T1, const std::string& name = "T1");

@@ -6,6 +6,7 @@
 // boundary has real corners where the domain has them: a smooth boundary with
 // marked corners (the b-field M) makes the volume patches above and below M
 // flat (180 degrees) at those corners, a zero scaled Jacobian.
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -24,10 +25,11 @@ struct InsetBase {
   int smoothing = 0;           // smoothing rounds used: fewer than asked where more made M intersect itself
 };
 
-// Whether a triangle sheet crosses itself (CGAL, exact predicates; triangles
-// that share a vertex or an edge only do not count). False when the sheet is
-// not an oriented 2-manifold (CGAL cannot hold it; the sheet checks say so).
-bool sheet_self_intersects(const mesh::TriMesh& sheet);
+// Whether a triangle sheet crosses itself (mesh::find_self_intersections:
+// exact predicates; triangles that share a vertex or an edge only do not
+// count). Throws Error(BadInput) starting with `name` when that cannot be
+// decided: the sheet is not an oriented 2-manifold (analyze_sheet says how).
+bool sheet_self_intersects(const mesh::TriMesh& sheet, const std::string& name);
 
 // Inputs: a sheet and its (u, v), a value c, the axis (0: u, 1: v). Splits
 // every triangle that the line uv(axis) = c crosses (orientation kept; new
@@ -45,15 +47,14 @@ double narrowest_band(const RectilinearDomain& domain);
 // pinned vertex is never moved. Returns the number of edges collapsed.
 int collapse_short_edges(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, const std::vector<char>& pinned, double min_length);
 
-// Inputs: M0trim with its 2D polycube, m0 in (0, 1) (the case's
-// decomposition.inset): d = m0 x half the
+// Inputs: M0trim with its 2D polycube, `inset` in (0, 1): d = inset x half the
 // narrowest band of the domain (its width, its height, and the gaps between
 // holes and between a hole and the outside); rounds of Taubin smoothing of
 // the 3D positions along the normals (the domain's corners fixed; halved
 // until M does not intersect itself, InsetBase::smoothing). Output: the inset sheet.
 // Throws check_failed when the result is not one sheet with one boundary
 // loop per domain boundary.
-InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double m0, int smoothing = 20);
+InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double inset, int smoothing);
 
 // Taubin smoothing (lambda 0.5, mu -0.53) of a sheet's vertices along their
 // normals (no tangential drift under the (u, v) map); `fixed` vertices stay.

@@ -1,9 +1,10 @@
 #pragma once
 // Section 4 of the seed paper in order: cut loops on T1, the tet mesh of the
-// cut surfaces, the midsurface M0, M0trim, its 2D polycube parameterization
-// and the base surface M. Each step is its own function (cut_loops.h,
-// midsurface.h, trim_midsurface.h, polycube_2d.h, base_surface.h); this runs
-// them with the options of a case file's "midsurface" section.
+// cut surfaces, the midsurface M0, M0trim and its 2D polycube
+// parameterization. Each step is its own function (cut_loops.h,
+// midsurface.h, trim_midsurface.h, polycube_2d.h); this runs them with the
+// options of a case file's "midsurface" section. The base surface M is made
+// from the result by inset_base.h.
 #include <string>
 #include <vector>
 
@@ -12,7 +13,6 @@
 #include "igaprep/mesh/tet_mesh.h"
 #include "igaprep/mesh/tetrahedralize.h"
 #include "igaprep/mesh/tri_mesh.h"
-#include "igaprep/param/base_surface.h"
 #include "igaprep/param/cut_loops.h"
 #include "igaprep/param/midsurface.h"
 #include "igaprep/param/polycube_2d.h"
@@ -26,7 +26,6 @@ struct MidsurfaceOptions {
   CutPlane plane;                        // CutKind::Plane
   std::vector<std::vector<int>> loops;   // CutKind::Loops: T1 vertex indices
   std::vector<Eigen::Vector3d> corners;  // corner points (4 per boundary loop of M0trim); empty = automatic
-  double m0 = 0.3;                       // trim value of the base surface, in (0, 1)
   bool path_lengths = true;              // trace the quality paths (section 4.1)
   mesh::TetgenOptions tetgen;
 };
@@ -39,13 +38,12 @@ struct MidsurfaceResult {
   PathLengthStats paths;
   TrimmedSheet m0trim;       // after split_boundary_ears (m0_vertex = -1 for the vertices that added)
   Polycube2D polycube;
-  BaseSurface base;
   std::vector<std::string> tried;  // automatic cut: why each rejected candidate failed
 };
 
 // Inputs: surfaces T1..Tn (validated, nested, outward), options, name of T1 for
-// messages. Output: every intermediate. Throws bad_input (a bad cut, corner
-// set or m0) or check_failed (a folded parameterization) with the reason.
+// messages. Output: every intermediate. Throws bad_input (a bad cut or corner
+// set) or check_failed (a folded parameterization) with the reason.
 MidsurfaceResult build_midsurface(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOptions& options,
                                   const std::string& name = "T1");
 

@@ -2,7 +2,7 @@
 // Point queries on a triangle sheet through its (u, v) parameterization: the
 // 3D point, the unit normal and the tangents dX/du, dX/dv at any (u, v) of the
 // parameter domain, interpolated linearly inside the (u, v) triangle holding
-// it. The volume layout (volume_layout.h) samples the base surface M this way.
+// it. The volume parameterization (volume_param.h) samples the base surface M this way.
 #include <memory>
 
 #include <Eigen/Core>

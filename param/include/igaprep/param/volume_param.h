@@ -34,6 +34,8 @@
 
 #include <Eigen/Core>
 
+#include "igaprep/core/progress.h"
+
 #include "igaprep/param/base_layout.h"
 #include "igaprep/param/decomposition_mesh.h"
 #include "igaprep/param/w_field.h"
@@ -42,9 +44,6 @@ namespace igaprep::param {
 
 struct VolumeParamOptions {
   int strategy = 2;  // section 6: 2 (default) or 1
-  double inset = 0.3;  // base surface: M0trim inset by this fraction of half its narrowest band (inset_base.h)
-  bool sliding_uv = true;  // base surface: cut along the iso-lines of sliding_uv.h (else the midsurface's (u, v))
-  int smoothing = 5;   // rounds of Taubin smoothing of the inset base surface (more: TetGen saw M intersect itself on torus3)
   // Angle of S+ and S- from M's plane at its boundary: 1.1 rad (63 degrees); pi/4 leaves the crests'
   // shells so thin near T1 that the fit folds there, and repairing that costs fidelity (docs/decomposition.md).
   double theta = 1.1;
@@ -56,6 +55,7 @@ struct VolumeParamOptions {
   int surface_degree = 6;
   double ray_step = 2e-3;     // ray march step, fraction of H's bounding-box diagonal
   double stream_step = 1e-3;  // streamline step (Runge-Kutta 4), fraction of the diagonal
+  ProgressCallback progress;  // streamlines traced, per core face
 };
 
 enum class BlockKind { CoreTop, CoreBottom, Crest, Shell };

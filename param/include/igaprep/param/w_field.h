@@ -1,7 +1,8 @@
 #pragma once
 // The w-field of the decomposition (seed paper, section 5.1): harmonic on H,
 // w = 0 on T1, w = (i - 1)/n on Ti (i = 2..n), w = 1 on the base surface M.
-// Its gradient carries M's boundary and corners out to T1 (boundary_traces.h).
+// Its gradient carries M's boundary and corners out to T1 (the streamlines of
+// volume_param.h).
 #include <vector>
 
 #include <Eigen/Core>

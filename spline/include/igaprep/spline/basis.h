@@ -32,6 +32,11 @@ struct BasisTable {
 };
 BasisTable basis_table(const std::vector<double>& U, int p, const std::vector<double>& params,
                        int order);
+// The same for parameters of one knot span, U[span] <= u <= U[span + 1]:
+// no search, so a parameter that rounds onto the span's end still gets this
+// span's functions (quadrature points of an element).
+BasisTable basis_table_on_span(const std::vector<double>& U, int p, int span, const std::vector<double>& params,
+                               int order);
 
 // Dense collocation matrix B (m x n), B(i, j) = d^k/du^k N_j(params[i]).
 Eigen::MatrixXd collocation_matrix(const std::vector<double>& U, int p,

@@ -56,8 +56,10 @@ using SlideFn = std::function<Eigen::Vector3d(int surface, const Eigen::Vector3d
 // (find_interfaces; an interface's `surface` >= 0 puts its control points on
 // that surface, a boundary side on its label); `slide` for those; sides
 // (patch, side 1..6) whose control points must stay (collapsed sides).
-// Control points on two different surfaces stay. Sample points where a
-// column of the Jacobian vanishes (collapsed sides) are left out.
+// Control points on two different surfaces stay. The scaled Jacobian is
+// spline::scaled_jacobian, the check's; sample points where it is
+// degenerate (degenerate_jacobian: collapsed sides; the check reports 0)
+// are left out, as no move can raise them.
 JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& slide,
                                               const std::vector<std::pair<int, int>>& fixed_sides,
                                               const JacobianOptimizationOptions& options = {});

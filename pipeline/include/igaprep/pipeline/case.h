@@ -1,0 +1,117 @@
+#pragma once
+// Case files (docs/case-format.md): the surfaces of a model, its materials,
+// the output folder and the parameters of each stage, as one JSON object.
+#include <Eigen/Core>
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "igaprep/mesh/tetrahedralize.h"
+#include "igaprep/mesh/tri_mesh.h"
+#include "igaprep/param/base_surface.h"
+#include "igaprep/param/midsurface_pipeline.h"
+#include "igaprep/param/volume_param.h"
+#include "igaprep/spline/block_fit.h"
+#include "igaprep/spline/optimize_jacobian.h"
+
+namespace igaprep::pipeline {
+
+struct CaseSurface {
+  std::string label;
+  std::string file;                 // absolute; empty for an offset or an in-memory surface
+  std::optional<int> offset_of;     // index of an earlier surface to offset inward
+  double inward = 0.0;              // offset distance (model units)
+  std::optional<mesh::TriMesh> mesh;  // given in memory (built-in models): no file is read
+};
+
+struct CaseMaterial {
+  std::string name;
+  double young_modulus = 0.0;
+  double poisson_ratio = 0.0;
+};
+
+enum class SolverChoice { Cholesky, ConjugateGradient };
+
+// Section "validation": the manufactured-solution study of a run. It runs on
+// a connected set of at most `patches` patches (0 = the whole model), grown
+// from the certified patch with the smallest scaled Jacobian, so its cost
+// does not grow with the model.
+struct CaseValidation {
+  bool enabled = true;
+  int coarse_refine = 0;
+  int fine_refine = 1;
+  int patches = 4;
+  SolverChoice solver = SolverChoice::Cholesky;  // CHOLMOD when present
+};
+
+// A labelled boundary, optionally only its sides whose centre (the mean of
+// the side's control points) lies in the box [lo, hi].
+struct CaseSideSelection {
+  std::string label;
+  std::optional<std::array<Eigen::Vector3d, 2>> box;
+};
+
+struct CaseFix {
+  CaseSideSelection where;
+  std::array<bool, 3> components{{true, true, true}};
+};
+
+struct CasePressure {
+  CaseSideSelection where;
+  double value = 0.0;
+};
+
+struct CaseTraction {
+  CaseSideSelection where;
+  Eigen::Vector3d value = Eigen::Vector3d::Zero();
+};
+
+// Section "load_case": a solve with the case's materials, written as result.h5.
+struct CaseLoadCase {
+  std::vector<CaseFix> fix;
+  std::vector<CasePressure> pressure;
+  std::vector<CaseTraction> traction;
+  Eigen::Vector3d body_force = Eigen::Vector3d::Zero();
+  int refine = 0;
+  SolverChoice solver = SolverChoice::Cholesky;
+};
+
+struct Case {
+  std::string path;        // the case file itself; empty for a case made in memory
+  std::string text;        // the case file's text as read (provenance); empty for a built-in case
+  std::string name;        // case name (defaults to the file's folder name)
+  std::vector<CaseSurface> surfaces;    // T1..Tn, outermost first
+  std::vector<CaseMaterial> materials;  // one per surface: material i lies inside T(i+1)
+  std::string output_dir;               // resolved against the case file's folder
+  mesh::TetgenOptions tetmesh;
+  param::MidsurfaceOptions midsurface;  // section "midsurface" (docs/midsurface.md)
+  param::BaseSurfaceOptions base;       // section "decomposition": inset, smoothing, sliding_uv
+  param::VolumeParamOptions volume;     // section "decomposition" (docs/decomposition.md)
+  spline::BlockFitOptions fit;          // section "fit"
+  spline::JacobianOptimizationOptions jacobian;  // section "fit", keys jacobian_*
+  std::vector<std::string> export_formats;  // section "export": besides model.h5, in order
+  CaseValidation validation;                // section "validation"
+  std::optional<CaseLoadCase> load_case;    // section "load_case"
+};
+
+// Reads and validates a case file. Unknown keys, wrong types, missing files
+// and inconsistent counts throw Error(BadInput) naming the file and the key.
+Case read_case(const std::string& path);
+
+// The same from JSON text; relative surface files and the output folder are
+// resolved against `folder`; `source` names the case in messages.
+Case parse_case(const std::string& json_text, const std::string& folder, const std::string& source);
+
+// A built-in model (sphere2, ring2, torus3; models/README) as a case whose
+// surfaces are generated in memory: it needs no file, so an installed
+// igaprep runs it from any folder. Output folder: "output" in the working dir.
+Case builtin_case(const std::string& name);
+
+// The case as JSON text, paths relative to `relative_to` (empty: as stored).
+// Sections after "tetmesh" only where they differ from their defaults (the
+// committed built-in cases), or every option's value with `all_options`
+// (provenance). In-memory surfaces are named by their label.
+std::string case_json(const Case& c, const std::string& relative_to, bool all_options = false);
+
+}  // namespace igaprep::pipeline

@@ -1,0 +1,45 @@
+#pragma once
+// The decomposition, parameterization and fit stages (seed paper, sections 5
+// to 7): H with M embedded (TetGen's second and last run), the w-field, M's
+// layout; the sampled hex blocks (strategy 2 or 1); their conforming
+// B-spline fit with labelled sides and repaired Jacobians.
+#include "igaprep/param/base_layout.h"
+#include "igaprep/param/base_surface.h"
+#include "igaprep/param/decomposition_mesh.h"
+#include "igaprep/param/volume_param.h"
+#include "igaprep/param/w_field.h"
+#include "igaprep/pipeline/case.h"
+#include "igaprep/pipeline/observer.h"
+#include "igaprep/pipeline/surfaces.h"
+#include "igaprep/spline/multipatch.h"
+#include "igaprep/spline/optimize_jacobian.h"
+
+namespace igaprep::pipeline {
+
+struct Decomposition {
+  param::DecompositionMesh H;  // T1..Tn with M embedded
+  param::WField w;             // harmonic w on H
+  param::BaseLayout layout;    // M's rectangles and boundary segments
+  double diagonal = 0.0;       // of H's bounding box: the scale of the stages' tolerances
+};
+
+struct Fit {
+  spline::MultiPatch model;  // labels = the case's surface labels, materials = the case's
+  int stitched = 0;          // side control points made identical by stitching
+  double max_stitch = 0.0;   // the largest such move
+  int unmatched_sides = 0;   // sides neither on an interface nor labelled (0 for a valid model)
+  spline::JacobianOptimizationResult jacobians;  // what optimize_jacobians did (all zero when off)
+};
+
+// Intermediates offered: decomposition_w (H with w).
+Decomposition decompose_stage(const Case& c, const Surfaces& surfaces, const param::BaseSurface& base,
+                              Observer& observer);
+
+// Intermediates offered: decomposition_samples, decomposition_blocks, decomposition_blocks_faces.
+param::VolumeParam param_stage(const Case& c, const Decomposition& d, Observer& observer);
+
+// The blocks fitted, stitched, their interfaces found and sides labelled,
+// then optimize_jacobians when the case's target is above 0.
+Fit fit_stage(const Case& c, const Decomposition& d, const param::VolumeParam& vp, Observer& observer);
+
+}  // namespace igaprep::pipeline

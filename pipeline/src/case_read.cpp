@@ -1,0 +1,303 @@
+#include "igaprep/pipeline/case.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "case_sections.h"
+#include "json_reader.h"
+#include "igaprep/core/error.h"
+#include "igaprep/export/export_model.h"
+#include "igaprep/models/builtin_models.h"
+
+namespace igaprep::pipeline {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+CaseSurface read_surface_entry(const json& entry, int index, const fs::path& folder, const std::string& file) {
+  const std::string where = "surfaces[" + std::to_string(index) + "]";
+  CaseSurface s;
+  if (entry.is_string()) {
+    s.file = entry.get<std::string>();
+  } else {
+    ObjectReader r(entry, where, file);
+    s.file = r.string("file", "");
+    s.label = r.string("label", "");
+    if (const json* of = r.find("offset_of")) {
+      if (!of->is_number_integer()) r.fail("'" + r.path("offset_of") + "' must be an integer surface index");
+      s.offset_of = of->get<int>();
+      s.inward = r.required_number("inward");
+    } else if (r.find("inward")) {
+      r.fail("'" + r.path("inward") + "' needs 'offset_of' (the surface to offset)");
+    }
+    r.refuse_unknown();
+  }
+  if (s.file.empty() == !s.offset_of.has_value())
+    throw bad_input(file + ": '" + where + "' needs exactly one of 'file' or 'offset_of'");
+  if (s.offset_of) {
+    if (*s.offset_of < 0 || *s.offset_of >= index)
+      throw bad_input(file + ": '" + where + ".offset_of' must name an earlier surface (0.." +
+                      std::to_string(index - 1) + ")");
+    if (!(s.inward > 0.0)) throw bad_input(file + ": '" + where + ".inward' must be positive");
+    if (s.label.empty()) s.label = "offset" + std::to_string(index);
+  } else {
+    const fs::path resolved = fs::path(s.file).is_absolute() ? fs::path(s.file) : folder / s.file;
+    if (!fs::exists(resolved))
+      throw bad_input(file + ": '" + where + "' names a file that does not exist: " + resolved.string());
+    s.file = resolved.lexically_normal().string();
+    if (s.label.empty()) s.label = fs::path(s.file).stem().string();
+  }
+  return s;
+}
+
+
+// "export": a list of format names written beside model.h5.
+std::vector<std::string> read_export(const json& v, const std::string& file) {
+  if (!v.is_array()) throw bad_input(file + ": 'export' must be a list of format names (gismo, mfem, vtu, bext, hdf5)");
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const std::string where = "export[" + std::to_string(i) + "]";
+    if (!v[i].is_string()) throw bad_input(file + ": '" + where + "' must be a string, got " + v[i].type_name());
+    const std::string name = v[i].get<std::string>();
+    if (name.find(',') != std::string::npos) throw bad_input(file + ": '" + where + "' must be one format name");
+    std::vector<exporter::Format> f;
+    try {
+      f = exporter::parse_formats(name);
+    } catch (const Error& e) {
+      throw bad_input(file + ": '" + where + "': " + e.what());
+    }
+    const std::string canonical = exporter::format_name(f.at(0));
+    if (std::find(out.begin(), out.end(), canonical) == out.end()) out.push_back(canonical);
+  }
+  return out;
+}
+
+SolverChoice read_solver(ObjectReader& r, SolverChoice fallback) {
+  const std::string name = r.string("solver", fallback == SolverChoice::Cholesky ? "cholesky" : "cg");
+  if (name != "cg" && name != "cholesky") r.fail("'" + r.path("solver") + "' must be \"cg\" or \"cholesky\"");
+  return name == "cg" ? SolverChoice::ConjugateGradient : SolverChoice::Cholesky;
+}
+
+// Reads "label" and optional "box" of a load-case entry.
+CaseSideSelection read_selection(ObjectReader& r, const std::string& file) {
+  CaseSideSelection s;
+  s.label = r.string("label", "");
+  if (s.label.empty()) r.fail("'" + r.path("label") + "' must name a labelled boundary (a surface label)");
+  if (const json* b = r.find("box")) {
+    if (!b->is_array() || b->size() != 2)
+      r.fail("'" + r.path("box") + "' must be [[xmin, ymin, zmin], [xmax, ymax, zmax]]");
+    const Eigen::Vector3d lo = read_vector3((*b)[0], r.path("box") + "[0]", file);
+    const Eigen::Vector3d hi = read_vector3((*b)[1], r.path("box") + "[1]", file);
+    if (!(lo.array() <= hi.array()).all()) r.fail("'" + r.path("box") + "' must have min <= max in x, y and z");
+    s.box = std::array<Eigen::Vector3d, 2>{lo, hi};
+  }
+  return s;
+}
+
+// A single entry or a list of them: calls read(entry, where) for each.
+template <class F>
+void for_each_entry(const json& v, const std::string& key, F read) {
+  if (v.is_array()) {
+    for (std::size_t i = 0; i < v.size(); ++i) read(v[i], key + "[" + std::to_string(i) + "]");
+  } else {
+    read(v, key);
+  }
+}
+
+CaseLoadCase read_load_case(const json& v, const std::string& file) {
+  ObjectReader r(v, "load_case", file);
+  CaseLoadCase lc;
+  const json* fix = r.find("fix");
+  if (!fix) r.fail("missing key 'load_case.fix' (a label, or {\"label\", \"box\", \"components\"}, or a list)");
+  for_each_entry(*fix, "load_case.fix", [&](const json& e, const std::string& where) {
+    CaseFix f;
+    if (e.is_string()) {
+      f.where.label = e.get<std::string>();
+      if (f.where.label.empty()) throw bad_input(file + ": '" + where + "' must not be empty");
+    } else {
+      ObjectReader er(e, where, file);
+      f.where = read_selection(er, file);
+      const std::string comp = er.string("components", "xyz");
+      f.components = {{false, false, false}};
+      for (char ch : comp) {
+        if (ch < 'x' || ch > 'z' || f.components[ch - 'x'])
+          er.fail("'" + er.path("components") + "' must be distinct letters of 'xyz', got '" + comp + "'");
+        f.components[ch - 'x'] = true;
+      }
+      if (comp.empty()) er.fail("'" + er.path("components") + "' must not be empty");
+      er.refuse_unknown();
+    }
+    lc.fix.push_back(f);
+  });
+  if (const json* p = r.find("pressure"))
+    for_each_entry(*p, "load_case.pressure", [&](const json& e, const std::string& where) {
+      ObjectReader er(e, where, file);
+      CasePressure cp;
+      cp.where = read_selection(er, file);
+      cp.value = er.required_number("value");
+      er.refuse_unknown();
+      lc.pressure.push_back(cp);
+    });
+  if (const json* t = r.find("traction"))
+    for_each_entry(*t, "load_case.traction", [&](const json& e, const std::string& where) {
+      ObjectReader er(e, where, file);
+      CaseTraction ct;
+      ct.where = read_selection(er, file);
+      const json* value = er.find("value");
+      if (!value) er.fail("missing key '" + er.path("value") + "' ([tx, ty, tz])");
+      ct.value = read_vector3(*value, er.path("value"), file);
+      er.refuse_unknown();
+      lc.traction.push_back(ct);
+    });
+  if (const json* b = r.find("body_force")) lc.body_force = read_vector3(*b, "load_case.body_force", file);
+  lc.refine = r.integer("refine", lc.refine, 0, 4);
+  lc.solver = read_solver(r, lc.solver);
+  r.refuse_unknown();
+  return lc;
+}
+
+CaseValidation read_validation(const json& v, const std::string& file) {
+  ObjectReader r(v, "validation", file);
+  CaseValidation c;
+  c.enabled = r.boolean("enabled", c.enabled);
+  c.coarse_refine = r.integer("coarse_refine", c.coarse_refine, 0, 7);
+  c.fine_refine = r.integer("fine_refine", c.fine_refine, 1, 8);
+  c.patches = r.integer("patches", c.patches, 0, 1000000);
+  c.solver = read_solver(r, c.solver);
+  r.refuse_unknown();
+  if (c.fine_refine <= c.coarse_refine) r.fail("'validation.fine_refine' must be greater than 'validation.coarse_refine'");
+  return c;
+}
+
+std::vector<CaseMaterial> read_materials(ObjectReader& r, std::size_t surfaces, const std::string& file) {
+  std::vector<CaseMaterial> out;
+  const json* materials = r.find("materials");
+  if (!materials) {
+    for (std::size_t i = 0; i < surfaces; ++i) out.push_back({"material" + std::to_string(i), 1.0, 0.3});
+    return out;
+  }
+  if (!materials->is_array()) r.fail("'materials' must be a list");
+  for (std::size_t i = 0; i < materials->size(); ++i) {
+    ObjectReader m((*materials)[i], "materials[" + std::to_string(i) + "]", file);
+    CaseMaterial mat;
+    mat.name = m.string("name", "material" + std::to_string(i));
+    mat.young_modulus = m.required_number("young_modulus");
+    mat.poisson_ratio = m.required_number("poisson_ratio");
+    m.refuse_unknown();
+    if (!(mat.young_modulus > 0.0)) m.fail("'" + m.path("young_modulus") + "' must be positive");
+    if (!(mat.poisson_ratio > -1.0 && mat.poisson_ratio < 0.5))
+      m.fail("'" + m.path("poisson_ratio") + "' must lie in (-1, 0.5)");
+    out.push_back(mat);
+  }
+  if (out.size() != surfaces)
+    r.fail("'materials' has " + std::to_string(out.size()) + " entries but there are " + std::to_string(surfaces) +
+           " surfaces (one material inside each surface)");
+  return out;
+}
+
+mesh::TetgenOptions read_tetmesh(const json& t, const std::string& file) {
+  ObjectReader tr(t, "tetmesh", file);
+  mesh::TetgenOptions o;
+  o.radius_edge_ratio = tr.number("radius_edge_ratio", o.radius_edge_ratio);
+  o.max_volume = tr.number("max_volume", o.max_volume);
+  tr.refuse_unknown();
+  if (o.radius_edge_ratio != 0.0 && !(o.radius_edge_ratio > 1.0))
+    tr.fail("'tetmesh.radius_edge_ratio' must be 0 (off) or greater than 1.0 (TetGen's refinement needs > 1.0 to end)");
+  if (o.max_volume < 0.0) tr.fail("'tetmesh.max_volume' must be 0 (none) or positive");
+  return o;
+}
+
+// Labels are the surfaces' (whether a side carries one is known after the fit).
+void check_load_case_labels(const Case& c, const ObjectReader& r) {
+  auto known = [&](const CaseSideSelection& w, const std::string& key) {
+    std::string list;
+    for (const auto& s : c.surfaces) {
+      if (s.label == w.label) return;
+      list += (list.empty() ? "" : ", ") + s.label;
+    }
+    r.fail("'" + key + ".label': '" + w.label + "' is not a surface label (labels: " + list + ")");
+  };
+  const CaseLoadCase& lc = *c.load_case;
+  for (std::size_t i = 0; i < lc.fix.size(); ++i) known(lc.fix[i].where, "load_case.fix[" + std::to_string(i) + "]");
+  for (std::size_t i = 0; i < lc.pressure.size(); ++i)
+    known(lc.pressure[i].where, "load_case.pressure[" + std::to_string(i) + "]");
+  for (std::size_t i = 0; i < lc.traction.size(); ++i)
+    known(lc.traction[i].where, "load_case.traction[" + std::to_string(i) + "]");
+}
+
+// The stage sections, each optional.
+void read_sections(ObjectReader& r, const std::string& file, Case& c) {
+  if (const json* t = r.find("tetmesh")) c.tetmesh = read_tetmesh(*t, file);
+  if (const json* m = r.find("midsurface")) c.midsurface = read_midsurface_section(*m, file);
+  if (const json* d = r.find("decomposition")) read_decomposition_section(*d, file, c.base, c.volume);
+  if (const json* f = r.find("fit")) read_fit_section(*f, file, c.fit, c.jacobian);
+  if (const json* e = r.find("export")) c.export_formats = read_export(*e, file);
+  if (const json* v = r.find("validation")) c.validation = read_validation(*v, file);
+  if (const json* l = r.find("load_case")) {
+    c.load_case = read_load_case(*l, file);
+    check_load_case_labels(c, r);
+  }
+  c.midsurface.tetgen = c.tetmesh;
+}
+
+}  // namespace
+
+Case parse_case(const std::string& json_text, const std::string& folder_name, const std::string& source) {
+  json root;
+  try {
+    root = json::parse(json_text);
+  } catch (const json::parse_error& e) {
+    throw bad_input(source + ": not valid JSON: " + e.what());
+  }
+  const fs::path folder = fs::absolute(fs::path(folder_name.empty() ? "." : folder_name)).lexically_normal();
+  Case c;
+  c.text = json_text;
+  ObjectReader r(root, "", source);
+  r.find("comment");  // free text for people (where a case's choices came from); not read
+  c.name = r.string("name", folder.filename().string());
+  const json* surfaces = r.find("surfaces");
+  if (!surfaces || !surfaces->is_array() || surfaces->empty())
+    r.fail("'surfaces' must be a non-empty list (outermost surface first)");
+  for (std::size_t i = 0; i < surfaces->size(); ++i)
+    c.surfaces.push_back(read_surface_entry((*surfaces)[i], static_cast<int>(i), folder, source));
+  c.materials = read_materials(r, c.surfaces.size(), source);
+  c.output_dir = (folder / r.string("output", "output")).lexically_normal().string();
+  read_sections(r, source, c);
+  r.refuse_unknown();
+  return c;
+}
+
+Case read_case(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw bad_input("cannot read case file '" + path + "'");
+  std::stringstream text;
+  text << in.rdbuf();
+  Case c = parse_case(text.str(), fs::absolute(fs::path(path)).parent_path().string(), path);
+  c.path = path;
+  return c;
+}
+
+Case builtin_case(const std::string& name) {
+  models::BuiltinModel model = models::make_builtin_model(name);
+  Case c;
+  c.name = model.name;
+  for (std::size_t i = 0; i < model.surfaces.size(); ++i) {
+    CaseSurface s;
+    s.label = model.labels[i];
+    s.mesh = std::move(model.surfaces[i]);
+    c.surfaces.push_back(std::move(s));
+    const auto& m = model.materials[i];
+    c.materials.push_back({m.name, m.young_modulus, m.poisson_ratio});
+  }
+  c.output_dir = (fs::current_path() / "output").string();
+  c.midsurface.tetgen = c.tetmesh;
+  return c;
+}
+
+}  // namespace igaprep::pipeline

@@ -1,0 +1,182 @@
+#include "igaprep/pipeline/run.h"
+
+#include <filesystem>
+
+#include "igaprep/core/error.h"
+#include "igaprep/export/hdf5_model.h"
+#include "igaprep/pipeline/check.h"
+#include "igaprep/pipeline/export.h"
+#include "igaprep/pipeline/midsurface.h"
+#include "igaprep/pipeline/provenance.h"
+#include "igaprep/pipeline/surfaces.h"
+#include "igaprep/pipeline/validation.h"
+#include "igaprep/pipeline/volume.h"
+#include "stage_timer.h"
+#include "text.h"
+
+namespace igaprep::pipeline {
+namespace {
+
+namespace fs = std::filesystem;
+
+long count_control_points(const spline::MultiPatch& mp) {
+  long n = 0;
+  for (const auto& p : mp.patches) n += static_cast<long>(p.control_points.rows());
+  return n;
+}
+
+// The run's section of the report: figures in a fixed order (docs/check-report.md).
+iga_check::PipelineSection pipeline_section(const Case& c, const param::MidsurfaceResult& mid, const Fit& fit,
+                                            const CheckFigures& check) {
+  const spline::MultiPatch& mp = fit.model;
+  iga_check::PipelineSection p;
+  p.case_name = c.name;
+  p.case_file = c.path.empty() ? "built-in model " + c.name : c.path;
+  auto add = [&](const std::string& name, double value) { p.figures.emplace_back(name, value); };
+  add("surfaces", static_cast<double>(c.surfaces.size()));
+  add("materials", static_cast<double>(c.materials.size()));
+  add("tets", static_cast<double>(mid.tets.T.rows()));
+  add("patches", static_cast<double>(mp.patches.size()));
+  int degree = 0, elements_per_direction = 0;
+  if (!mp.patches.empty()) {
+    degree = mp.patches[0].degrees[0];
+    elements_per_direction = mp.patches[0].count(0) - degree;
+  }
+  add("degree", degree);
+  add("elements_per_direction", elements_per_direction);  // of patch 0, direction u (before any knot insertion)
+  add("elements", static_cast<double>(check.elements));
+  add("control_points", static_cast<double>(count_control_points(mp)));
+  add("interfaces", static_cast<double>(mp.interfaces.size()));
+  add("boundary_sides", static_cast<double>(mp.boundaries.size()));
+  add("unmatched_sides", fit.unmatched_sides);
+  add("stitched_control_points", fit.stitched);
+  add("max_stitch", fit.max_stitch);
+  if (c.jacobian.target > 0.0) {  // optimize_jacobians: its own samples' lowest scaled Jacobian before and after
+    add("fit_min_scaled_jacobian", fit.jacobians.min_before);
+    add("optimized_min_scaled_jacobian", fit.jacobians.min_after);
+    add("optimized_control_points", fit.jacobians.moved_points);
+  }
+  add("positive_elements", static_cast<double>(check.positive));
+  add("negative_elements", static_cast<double>(check.negative));
+  add("degenerate_elements", static_cast<double>(check.degenerate));
+  add("undecided_elements", static_cast<double>(check.undecided));
+  add("min_scaled_jacobian", check.min_scaled_jacobian);
+  add("interface_gap_relative", check.interface_gap);
+  for (std::size_t i = 0; i < check.fidelity.size(); ++i)
+    add("fidelity_relative_" + (i < mp.labels.size() ? mp.labels[i] : std::to_string(i)), check.fidelity[i]);
+  for (std::size_t i = 0; i < check.volume_difference.size(); ++i)
+    add("volume_difference_region_" + std::to_string(i), check.volume_difference[i]);
+  return p;
+}
+
+std::string verdict_of(const iga_check::CheckReport& report, const iga_check::PipelineSection& p) {
+  std::string verdict = report.passed ? "check passed" : "check FAILED";
+  if (!p.validation)
+    verdict += "; validation off";
+  else if (!p.validation->ran)
+    verdict += "; validation NOT RUN (" + p.validation->message + ")";
+  else
+    verdict += text("; validation L2 rate %.2f %s %.1f", p.validation->l2_rate, p.validation->met ? ">=" : "<",
+                    p.validation->required_rate);
+  return (p.passed ? "PASS: " : "FAIL: ") + verdict;
+}
+
+void write_report(RunResult& r, const RunOptions& o) {
+  if (!o.write_outputs) return;
+  r.report.pipeline->outputs.push_back("report.json");
+  r.report.pipeline->outputs.push_back("report.html");
+  iga_check::write_report(r.report, r.output_dir);
+}
+
+// The load case's solve; on failure the report so far is written, then the
+// error goes on (bad input named by the case).
+void run_load_case(const Case& c, Observer& observer, const RunOptions& o, RunResult& r,
+                   std::vector<iga_check::PipelineStage>& stages) {
+  StageTimer timer;
+  iga_check::PipelineSection& p = *r.report.pipeline;
+  try {
+    const LoadCaseResult lc = load_case_stage(r.model, *c.load_case, observer);
+    const auto& rep = lc.solution.report;
+    r.load_case = LoadCaseFigures{rep.unknowns, rep.strain_energy, rep.max_displacement};
+    p.figures.emplace_back("load_case_unknowns", static_cast<double>(rep.unknowns));
+    p.figures.emplace_back("load_case_strain_energy", rep.strain_energy);
+    p.figures.emplace_back("load_case_max_displacement", rep.max_displacement);
+    if (o.write_outputs) {
+      exporter::write_hdf5_model(lc.solution.model, (fs::path(r.output_dir) / "result.h5").string());
+      p.outputs.push_back("result.h5");
+    }
+  } catch (const Error& e) {
+    stages.push_back({"load_case", timer.seconds()});
+    p.stages = stages;
+    p.verdict = std::string("ERROR: load case: ") + e.what();
+    write_report(r, o);
+    if (e.kind() == ErrorKind::BadInput) throw bad_input((c.path.empty() ? c.name : c.path) + ": " + e.what());
+    throw;
+  }
+}
+
+// A stage's time goes to the report as the observer hears of it.
+class StageRecorder : public Observer {
+ public:
+  StageRecorder(Observer& next, std::vector<iga_check::PipelineStage>& stages) : next_(next), stages_(stages) {}
+  void stage_finished(const StageSummary& s) override {
+    stages_.push_back({s.stage, s.seconds});
+    next_.stage_finished(s);
+  }
+  void progress(const std::string& task, std::size_t done, std::size_t total) override {
+    next_.progress(task, done, total);
+  }
+  bool wants_intermediate(const std::string& name) const override { return next_.wants_intermediate(name); }
+  void intermediate(const std::string& name, const mesh::VtuMesh& mesh) override { next_.intermediate(name, mesh); }
+
+ private:
+  Observer& next_;
+  std::vector<iga_check::PipelineStage>& stages_;
+};
+
+StageSummary validate_summary(const Surfaces& s, double seconds) {
+  std::string line = text("%zu surface(s), nested", s.meshes.size());
+  for (std::size_t i = 0; i < s.reports.size(); ++i)
+    line += text("; %s: %d faces, genus %d", s.names[i].c_str(), s.reports[i].faces, s.reports[i].genus);
+  return {"validate", seconds, line, {}};
+}
+
+}  // namespace
+
+RunResult run(const Case& c, Observer& outer, const RunOptions& o) {
+  RunResult r;
+  r.output_dir = o.output_dir.empty() ? c.output_dir : o.output_dir;
+  std::vector<iga_check::PipelineStage> stages;
+  StageRecorder observer(outer, stages);
+
+  StageTimer validate_timer;
+  const Surfaces surfaces = load_surfaces(c);
+  observer.stage_finished(validate_summary(surfaces, validate_timer.seconds()));
+  const param::MidsurfaceResult mid = midsurface_stage(c, surfaces, observer);
+  const param::BaseSurface base = base_stage(c, mid, observer);
+  const Decomposition d = decompose_stage(c, surfaces, base, observer);
+  r.rectangles = static_cast<int>(d.layout.rectangles.size());
+  r.boundary_segments = static_cast<int>(d.layout.crests.size());
+  Fit fit = fit_stage(c, d, param_stage(c, d, observer), observer);
+  fill_provenance(c, fit.model);
+
+  Check check = check_stage(fit.model, surfaces.meshes, {}, observer);
+  r.report = std::move(check.report);
+  r.report.model = "model.h5";
+  r.report.pipeline = pipeline_section(c, mid, fit, check.figures);
+  iga_check::PipelineSection& p = *r.report.pipeline;
+  r.model = std::move(fit.model);
+  if (o.write_outputs)
+    for (const auto& f : export_stage(r.model, c.export_formats, r.output_dir, observer).written)
+      p.outputs.push_back(fs::path(f).filename().string());
+  if (c.validation.enabled) p.validation = validation_stage(r.model, r.report, c.validation, observer);
+  if (c.load_case) run_load_case(c, observer, o, r, stages);
+  p.stages = stages;
+  p.passed = r.report.passed && (!p.validation || p.validation->met);
+  p.verdict = verdict_of(r.report, p);
+  r.passed = p.passed;
+  write_report(r, o);
+  return r;
+}
+
+}  // namespace igaprep::pipeline

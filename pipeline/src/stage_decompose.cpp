@@ -1,0 +1,115 @@
+#include <Eigen/Core>
+
+#include "igaprep/param/blocks_tet_mesh.h"
+#include "igaprep/pipeline/volume.h"
+#include "stage_timer.h"
+#include "text.h"
+
+namespace igaprep::pipeline {
+namespace {
+
+// Every block's sample points, with the block index.
+mesh::VtuMesh samples_vtu(const param::VolumeParam& vp) {
+  Eigen::Index total = 0;
+  for (const auto& b : vp.blocks) total += b.samples.rows();
+  mesh::VtuMesh v;
+  v.points.resize(total, 3);
+  Eigen::VectorXi block(total);
+  Eigen::Index row = 0;
+  for (std::size_t i = 0; i < vp.blocks.size(); ++i) {
+    const auto& S = vp.blocks[i].samples;
+    v.points.middleRows(row, S.rows()) = S;
+    block.segment(row, S.rows()).setConstant(static_cast<int>(i));
+    for (Eigen::Index k = 0; k < S.rows(); ++k) v.add_cell(mesh::kVtuVertex, {static_cast<int>(row + k)});
+    row += S.rows();
+  }
+  v.add_point_data("block", block);
+  return v;
+}
+
+// Every block's grid thinned to at most 8 cells per direction (the same
+// samples on both sides of a shared face), or ring2's mesh would have 3
+// million tets.
+std::vector<param::SampledBlock> thinned_blocks(const param::VolumeParam& vp) {
+  const int m = static_cast<int>(vp.params.size());
+  int stride = 1;
+  while ((m - 1) % (2 * stride) == 0 && (m - 1) / stride > 8) stride *= 2;
+  const int mc = (m - 1) / stride + 1;
+  std::vector<param::SampledBlock> coarse = vp.blocks;
+  for (std::size_t b = 0; b < coarse.size(); ++b) {
+    Eigen::MatrixXd s(mc * mc * mc, 3);
+    for (int k = 0; k < mc; ++k)
+      for (int j = 0; j < mc; ++j)
+        for (int i = 0; i < mc; ++i)
+          s.row(i + mc * (j + mc * k)) = vp.blocks[b].samples.row(stride * i + m * (stride * j + m * stride * k));
+    coarse[b].samples = std::move(s);
+  }
+  return coarse;
+}
+
+// The blocks as one conforming tet mesh (blocks_tet_mesh.h): the
+// decomposition surfaces are its faces.
+void offer_blocks_mesh(const param::VolumeParam& vp, double diag, Observer& observer) {
+  if (!observer.wants_intermediate("decomposition_blocks") &&
+      !observer.wants_intermediate("decomposition_blocks_faces"))
+    return;
+  const std::vector<param::SampledBlock> coarse = thinned_blocks(vp);
+  const param::BlocksTetMesh bm = param::blocks_tet_mesh(coarse, 1e-9 * diag);
+  offer_intermediate(observer, "decomposition_blocks", [&] {
+    mesh::VtuMesh v = mesh::vtu_tets(bm.tets);
+    v.add_cell_data("block", bm.block);
+    return v;
+  });
+  offer_intermediate(observer, "decomposition_blocks_faces", [&] { return mesh::vtu_marked_faces(bm.tets); });
+}
+
+}  // namespace
+
+Decomposition decompose_stage(const Case& c, const Surfaces& surfaces, const param::BaseSurface& base,
+                              Observer& observer) {
+  StageTimer timer;
+  Decomposition d;
+  d.H = param::decomposition_mesh(surfaces.meshes, base.m.mesh, c.tetmesh);
+  d.w = param::w_field(d.H);
+  d.layout = param::base_layout(base.m);
+  d.diagonal = (d.H.tets.V.colwise().maxCoeff() - d.H.tets.V.colwise().minCoeff()).norm();
+  StageSummary s{"decompose", timer.seconds(),
+                 text("H: %lld vertices, %lld tets; w: %zu interior extrema; M: %zu rectangles, %zu boundary segments",
+                      static_cast<long long>(d.H.tets.V.rows()), static_cast<long long>(d.H.tets.T.rows()),
+                      d.w.extrema.size(), d.layout.rectangles.size(), d.layout.crests.size()),
+                 {}};
+  observer.stage_finished(s);
+  offer_intermediate(observer, "decomposition_w", [&] {
+    mesh::VtuMesh v = mesh::vtu_tets(d.H.tets);
+    v.add_point_data("w", d.w.w);
+    return v;
+  });
+  return d;
+}
+
+param::VolumeParam param_stage(const Case& c, const Decomposition& d, Observer& observer) {
+  StageTimer timer;
+  param::VolumeParamOptions options = c.volume;
+  options.progress = progress_to(observer);
+  param::VolumeParam vp = param::build_volume_param(d.H, d.w, d.layout, spline::block_sample_params(c.fit), options);
+  StageSummary s{"param", timer.seconds(),
+                 text("strategy %d, w0 = %.3f: %zu blocks (%d core faces x %d layers + core), %d streamlines, %d "
+                      "folded sample cells",
+                      c.volume.strategy, vp.w0, vp.blocks.size(), vp.core_faces, vp.layers, vp.streamlines,
+                      vp.folded_cells),
+                 {}};
+  if (vp.folded_cells > 0) {
+    std::string line = "folded sample cells:";
+    for (std::size_t i = 0; i < vp.blocks.size(); ++i)
+      if (vp.blocks[i].folded > 0)
+        line += text(" block %zu (%s %d, layer %d): %d;", i, param::to_string(vp.blocks[i].kind), vp.blocks[i].source,
+                     vp.blocks[i].layer, vp.blocks[i].folded);
+    s.details.push_back(line);
+  }
+  observer.stage_finished(s);
+  offer_intermediate(observer, "decomposition_samples", [&] { return samples_vtu(vp); });
+  offer_blocks_mesh(vp, d.diagonal, observer);
+  return vp;
+}
+
+}  // namespace igaprep::pipeline

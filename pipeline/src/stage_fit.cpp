@@ -1,0 +1,80 @@
+#include "igaprep/param/surface_projector.h"
+#include "igaprep/pipeline/volume.h"
+#include "igaprep/spline/block_fit.h"
+#include "igaprep/spline/find_interfaces.h"
+#include "igaprep/spline/label_sides.h"
+#include "stage_timer.h"
+#include "text.h"
+
+namespace igaprep::pipeline {
+namespace {
+
+// Each block fitted alone; stitching then makes shared side control points identical.
+void fit_blocks(const Case& c, const param::VolumeParam& vp, spline::MultiPatch& mp) {
+  for (const auto& s : c.surfaces) mp.labels.push_back(s.label);
+  for (const auto& m : c.materials) mp.materials.push_back({m.name, m.young_modulus, m.poisson_ratio});
+  for (const auto& b : vp.blocks) {
+    spline::Patch p = spline::fit_block(b.samples, c.fit);
+    p.material = b.material;
+    mp.patches.push_back(std::move(p));
+  }
+}
+
+int connect_and_label(const param::VolumeParam& vp, double diag, spline::MultiPatch& mp) {
+  spline::find_interfaces(mp, 1e-12 * diag);
+  std::vector<std::array<int, 6>> labels;
+  std::vector<std::array<bool, 6>> collapsed;
+  for (const auto& b : vp.blocks) {
+    labels.push_back(b.side_label);
+    collapsed.push_back(b.collapsed);
+  }
+  return spline::label_sides(mp, labels, collapsed);
+}
+
+// Moves the control points where the sampled scaled Jacobian is below the
+// case's target (optimize_jacobian.h): those on T1 and the Ti slide along
+// them, collapsed sides stay.
+spline::JacobianOptimizationResult raise_jacobians(const Case& c, const Decomposition& d, const param::VolumeParam& vp,
+                                                   spline::MultiPatch& mp) {
+  const std::vector<param::SurfaceProjector> surfaces = param::surface_projectors(d.H);
+  auto slide = [&](int surface, const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
+    return surfaces.at(static_cast<std::size_t>(surface)).slide(from, to);
+  };
+  std::vector<std::pair<int, int>> fixed;
+  for (std::size_t p = 0; p < vp.blocks.size(); ++p)
+    for (int s = 0; s < 6; ++s)
+      if (vp.blocks[p].collapsed[static_cast<std::size_t>(s)]) fixed.emplace_back(static_cast<int>(p), s + 1);
+  return spline::optimize_jacobians(mp, slide, fixed, c.jacobian);
+}
+
+}  // namespace
+
+Fit fit_stage(const Case& c, const Decomposition& d, const param::VolumeParam& vp, Observer& observer) {
+  StageTimer timer;
+  Fit out;
+  spline::MultiPatch& mp = out.model;
+  fit_blocks(c, vp, mp);
+  const double diag = d.diagonal;
+  out.stitched = spline::stitch_control_points(mp, 1e-9 * diag, &out.max_stitch);
+  out.unmatched_sides = connect_and_label(vp, diag, mp);
+  StageSummary s{"fit", 0.0,
+                 text("%zu patches, degree %d, %d elements per direction; %zu interfaces (%d stitched points, max "
+                      "move %.1e), %zu boundary sides, %d unmatched sides, %zu layer(s)",
+                      mp.patches.size(), c.fit.degree, c.fit.elements, mp.interfaces.size(), out.stitched,
+                      out.max_stitch, mp.boundaries.size(), out.unmatched_sides, c.surfaces.size()),
+                 {}};
+  if (c.jacobian.target > 0.0) {
+    StageTimer jt;
+    out.jacobians = raise_jacobians(c, d, vp, mp);
+    const auto& r = out.jacobians;
+    s.details.push_back(text("Jacobians %.2f s: lowest sampled scaled Jacobian %.3f -> %.3f, points below %.2f: %d -> "
+                             "%d (%d control points moved, at most %.2g, %d sweeps, %d patches on dense samples)",
+                             jt.seconds(), r.min_before, r.min_after, c.jacobian.target, r.below_before,
+                             r.below_after, r.moved_points, r.max_move, r.sweeps, r.dense_patches));
+  }
+  s.seconds = timer.seconds();
+  observer.stage_finished(s);
+  return out;
+}
+
+}  // namespace igaprep::pipeline

@@ -1,0 +1,51 @@
+#include "igaprep/pipeline/surfaces.h"
+
+#include "igaprep/core/error.h"
+#include "igaprep/mesh/nesting.h"
+#include "igaprep/mesh/offset_surface.h"
+#include "igaprep/mesh/read_surface.h"
+
+namespace igaprep::pipeline {
+
+Surfaces load_surfaces(const Case& c) {
+  Surfaces out;
+  std::string errors;
+  for (const CaseSurface& s : c.surfaces) {
+    mesh::TriMesh m;
+    std::string name = s.label;
+    if (s.offset_of) {
+      mesh::OffsetOptions options;
+      options.distance = s.inward;
+      try {
+        m = mesh::offset_inward(out.meshes.at(static_cast<std::size_t>(*s.offset_of)), options);
+      } catch (const Error& e) {
+        throw Error(e.kind(), (c.path.empty() ? c.name : c.path) + ": surface '" + s.label + "' (offset of " +
+                                  c.surfaces.at(static_cast<std::size_t>(*s.offset_of)).label + "): " + e.what());
+      }
+      name = s.label + " (offset of " + out.names.at(static_cast<std::size_t>(*s.offset_of)) + " by " +
+             std::to_string(s.inward) + ")";
+    } else if (s.mesh) {
+      m = *s.mesh;
+    } else {
+      m = mesh::read_surface(s.file);
+      name = s.file;
+    }
+    mesh::SurfaceReport report = mesh::check_and_repair_surface(m, name);
+    for (const auto& e : report.errors) errors += "\n  " + e;
+    out.meshes.push_back(std::move(m));
+    out.reports.push_back(std::move(report));
+    out.names.push_back(s.label);
+  }
+  if (!errors.empty()) throw bad_input("the case's surfaces have defects:" + errors);
+  if (out.meshes.size() > 1) {
+    const mesh::NestingReport nesting = mesh::check_nesting(out.meshes, out.names);
+    if (!nesting.nested) {
+      std::string list;
+      for (const auto& e : nesting.errors) list += "\n  " + e;
+      throw bad_input("the case's surfaces are not nested (outermost first):" + list);
+    }
+  }
+  return out;
+}
+
+}  // namespace igaprep::pipeline

@@ -1,0 +1,22 @@
+#pragma once
+// printf-style formatting into a string, for the stages' summary lines.
+#include <cstdarg>
+#include <cstdio>
+#include <string>
+
+namespace igaprep::pipeline {
+
+__attribute__((format(printf, 1, 2))) inline std::string text(const char* format, ...) {
+  va_list args;
+  va_start(args, format);
+  va_list copy;
+  va_copy(copy, args);
+  const int n = std::vsnprintf(nullptr, 0, format, copy);
+  va_end(copy);
+  std::string out(n > 0 ? static_cast<std::size_t>(n) : 0, '\0');
+  if (n > 0) std::vsnprintf(out.data(), out.size() + 1, format, args);
+  va_end(args);
+  return out;
+}
+
+}  // namespace igaprep::pipeline

@@ -1,0 +1,88 @@
+// The elasticity solve on a model's labelled sides, refinement for analysis,
+// and export to other formats.
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include "bindings.h"
+#include "convert.h"
+#include "igaprep/core/error.h"
+#include "igaprep/export/export_model.h"
+#include "igaprep/iga_check/elasticity_refine.h"
+#include "igaprep/iga_check/elasticity_solve.h"
+
+namespace igaprep::python {
+
+namespace {
+
+// fix: a label, a list of labels, or a dict label -> components ("xyz", "xz", ...).
+std::vector<iga_check::FixedSide> fixed_sides(const py::object& fix) {
+  std::vector<iga_check::FixedSide> out;
+  auto add = [&](const std::string& label, const std::string& components) {
+    iga_check::FixedSide f{label, {{false, false, false}}};
+    for (char c : components) {
+      if (c < 'x' || c > 'z') throw bad_input("fix['" + label + "']: components must be letters of 'xyz'");
+      f.components[c - 'x'] = true;
+    }
+    out.push_back(f);
+  };
+  if (fix.is_none()) return out;
+  if (py::isinstance<py::str>(fix)) add(fix.cast<std::string>(), "xyz");
+  else if (py::isinstance<py::dict>(fix))
+    for (auto [k, v] : fix.cast<py::dict>()) add(k.cast<std::string>(), v.cast<std::string>());
+  else
+    for (auto l : fix) add(l.cast<std::string>(), "xyz");
+  return out;
+}
+
+py::dict solve(const spline::MultiPatch& model, const py::object& fix, const std::map<std::string, double>& pressure,
+               const std::map<std::string, Eigen::Vector3d>& traction, const Eigen::Vector3d& body_force, int refine,
+               const std::string& solver) {
+  iga_check::ElasticityProblem problem;
+  problem.fixed = fixed_sides(fix);
+  for (const auto& [label, p] : pressure) problem.pressures.push_back({label, p});
+  for (const auto& [label, t] : traction) problem.tractions.push_back({label, t});
+  problem.body_force = body_force;
+  iga_check::ElasticityOptions options;
+  options.refine = refine;
+  if (solver != "cholesky" && solver != "cg") throw bad_input("solver must be 'cholesky' or 'cg', got '" + solver + "'");
+  options.solver = solver == "cg" ? iga_check::LinearSolver::ConjugateGradient : iga_check::LinearSolver::Cholesky;
+  iga_check::ElasticitySolution s;
+  {
+    py::gil_scoped_release release;
+    s = iga_check::solve_elasticity(model, problem, options);
+  }
+  py::list displacements;
+  for (const auto& p : s.model.patches) displacements.append(per_control_point(p, p.displacement));
+  return py::dict(py::arg("displacements") = displacements, py::arg("strain_energy") = s.report.strain_energy,
+                  py::arg("max_displacement") = s.report.max_displacement, py::arg("unknowns") = s.report.unknowns,
+                  py::arg("solver") = s.report.solver, py::arg("model") = py::cast(std::move(s.model)));
+}
+
+std::vector<std::string> export_formats(const spline::MultiPatch& model, const std::vector<std::string>& formats,
+                                        const std::string& base) {
+  std::vector<exporter::Format> list;
+  for (const auto& f : formats)
+    for (exporter::Format x : exporter::parse_formats(f)) list.push_back(x);
+  py::gil_scoped_release release;
+  return exporter::export_model(model, base, list);
+}
+
+}  // namespace
+
+void bind_analysis(py::module_& m) {
+  m.def("solve", &solve, py::arg("model"), py::arg("fix") = py::none(),
+        py::arg("pressure") = std::map<std::string, double>{},
+        py::arg("traction") = std::map<std::string, Eigen::Vector3d>{},
+        py::arg("body_force") = Eigen::Vector3d::Zero().eval(), py::arg("refine") = 0, py::arg("solver") = "cholesky",
+        "Linear elasticity on the model with its materials. fix: labels (all components) or {label: 'xz'};\n"
+        "pressure: {label: p}; traction: {label: (tx, ty, tz)}; body_force per volume. Returns a dict with\n"
+        "displacements (one (n_w, n_v, n_u, 3) array per patch of the refined model), strain_energy,\n"
+        "max_displacement, unknowns, solver and the refined model carrying the displacement.");
+  m.def("refine", &iga_check::refine_for_analysis, py::arg("model"), py::arg("elevate") = 0, py::arg("refine") = 1,
+        py::call_guard<py::gil_scoped_release>(),
+        "Degree elevation by `elevate`, then `refine` uniform bisections of every knot span (same geometry).");
+  m.def("export", &export_formats, py::arg("model"), py::arg("formats"), py::arg("base"),
+        "Writes the model as base + .h5/.xml/.mesh/.vtu/.bext for formats hdf5, gismo, mfem, vtu, bext; returns the paths.");
+}
+
+}  // namespace igaprep::python

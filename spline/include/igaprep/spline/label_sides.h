@@ -1,0 +1,22 @@
+#pragma once
+// Labels of a fitted multipatch model's sides: which input surface each
+// material interface lies on, and which boundary label each outer side has.
+#include <array>
+#include <vector>
+
+#include "igaprep/spline/multipatch.h"
+
+namespace igaprep::spline {
+
+// Inputs: a model whose interfaces are found (find_interfaces.h) and whose
+// patches carry materials 0..n-1 (material i inside surface T(i+1)); per
+// patch and side (G+Smo order) the label of the surface the side lies on
+// (-1: none) and whether the side is collapsed to a curve.
+// Effect: an interface between materials i-1 and i gets surface i; every side
+// that is not on an interface and has a label becomes a boundary with it.
+// Output: the number of sides left neither on an interface, nor labelled,
+// nor collapsed (0 for a valid model).
+int label_sides(MultiPatch& mp, const std::vector<std::array<int, 6>>& side_labels,
+                const std::vector<std::array<bool, 6>>& collapsed);
+
+}  // namespace igaprep::spline

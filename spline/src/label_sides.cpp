@@ -1,0 +1,32 @@
+#include "igaprep/spline/label_sides.h"
+
+#include <algorithm>
+
+#include "igaprep/core/error.h"
+
+namespace igaprep::spline {
+
+int label_sides(MultiPatch& mp, const std::vector<std::array<int, 6>>& side_labels,
+                const std::vector<std::array<bool, 6>>& collapsed) {
+  if (side_labels.size() != mp.patches.size() || collapsed.size() != mp.patches.size())
+    throw internal_error("label_sides: one entry per patch is needed");
+  for (auto& itf : mp.interfaces) {
+    const int ma = mp.patches[itf.patch_a].material, mb = mp.patches[itf.patch_b].material;
+    if (ma != mb) itf.surface = std::max(ma, mb);
+  }
+  std::vector<std::array<bool, 6>> on_interface(mp.patches.size(), std::array<bool, 6>{});
+  for (const auto& itf : mp.interfaces) {
+    on_interface[itf.patch_a][itf.side_a - 1] = true;
+    on_interface[itf.patch_b][itf.side_b - 1] = true;
+  }
+  int unmatched = 0;
+  for (std::size_t p = 0; p < mp.patches.size(); ++p)
+    for (int s = 0; s < 6; ++s) {
+      if (on_interface[p][s]) continue;
+      if (side_labels[p][s] >= 0) mp.boundaries.push_back({static_cast<int>(p), s + 1, side_labels[p][s]});
+      else if (!collapsed[p][s]) ++unmatched;
+    }
+  return unmatched;
+}
+
+}  // namespace igaprep::spline

@@ -1,0 +1,96 @@
+#include "igaprep/spline/submodel.h"
+
+#include <algorithm>
+#include <deque>
+#include <map>
+#include <set>
+
+#include "igaprep/core/error.h"
+
+namespace igaprep::spline {
+
+MultiPatch submodel(const MultiPatch& mp, const std::vector<int>& patches, const std::string& cut_label) {
+  std::map<int, int> new_index;
+  for (int p : patches) {
+    if (p < 0 || p >= static_cast<int>(mp.patches.size()) || new_index.count(p))
+      throw internal_error("submodel: bad or repeated patch index " + std::to_string(p));
+    const int next = static_cast<int>(new_index.size());
+    new_index[p] = next;
+  }
+  MultiPatch sub;
+  sub.labels = mp.labels;
+  sub.materials = mp.materials;
+  sub.patches.resize(patches.size());
+  for (const auto& [old, now] : new_index) {
+    sub.patches[now] = mp.patches[old];
+    sub.patches[now].displacement.resize(0, 0);
+  }
+  std::set<std::pair<int, int>> covered;
+  for (const auto& itf : mp.interfaces) {
+    auto a = new_index.find(itf.patch_a), b = new_index.find(itf.patch_b);
+    if (a == new_index.end() || b == new_index.end()) continue;
+    Interface i = itf;
+    i.patch_a = a->second;
+    i.patch_b = b->second;
+    sub.interfaces.push_back(i);
+    covered.insert({i.patch_a, i.side_a});
+    covered.insert({i.patch_b, i.side_b});
+  }
+  for (const auto& bs : mp.boundaries) {
+    auto a = new_index.find(bs.patch);
+    if (a == new_index.end()) continue;
+    BoundarySide s = bs;
+    s.patch = a->second;
+    sub.boundaries.push_back(s);
+    covered.insert({s.patch, s.side});
+  }
+  int cut = -1;  // index of cut_label, added when first used
+  for (int p = 0; p < static_cast<int>(sub.patches.size()); ++p)
+    for (int s = 1; s <= 6; ++s) {
+      if (covered.count({p, s})) continue;
+      if (cut < 0) {
+        cut = static_cast<int>(sub.labels.size());
+        sub.labels.push_back(cut_label);
+      }
+      sub.boundaries.push_back({p, s, cut});
+    }
+  return sub;
+}
+
+std::vector<int> connected_patches(const MultiPatch& mp, const std::vector<bool>& eligible,
+                                    const std::vector<double>& score, int max_patches) {
+  const int n = static_cast<int>(mp.patches.size());
+  int start = -1;
+  for (int p = 0; p < n; ++p)
+    if (eligible[p] && (start < 0 || score[p] < score[start])) start = p;
+  if (start < 0) return {};
+  if (max_patches <= 0 || max_patches >= n) {
+    std::vector<int> all;
+    for (int p = 0; p < n; ++p)
+      if (eligible[p]) all.push_back(p);
+    return all;
+  }
+  std::vector<std::set<int>> neighbours(n);
+  for (const auto& itf : mp.interfaces) {
+    neighbours[itf.patch_a].insert(itf.patch_b);
+    neighbours[itf.patch_b].insert(itf.patch_a);
+  }
+  std::vector<int> chosen{start};
+  std::set<int> seen{start};
+  std::deque<int> queue{start};
+  while (!queue.empty() && static_cast<int>(chosen.size()) < max_patches) {
+    const int p = queue.front();
+    queue.pop_front();
+    for (int q : neighbours[p]) {
+      if (static_cast<int>(chosen.size()) >= max_patches) break;
+      if (!eligible[q] || seen.count(q)) continue;
+      seen.insert(q);
+      chosen.push_back(q);
+      queue.push_back(q);
+    }
+  }
+  std::sort(chosen.begin(), chosen.end());
+  return chosen;
+}
+
+}  // namespace igaprep::spline

@@ -1,0 +1,167 @@
+// Case files through the library: every bad key refused with bad_input
+// naming the key, before any work; the built-in cases; case_json.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "igaprep/core/error.h"
+#include "igaprep/models/builtin_models.h"
+#include "igaprep/pipeline/case.h"
+#include "pipeline_runs.h"
+
+namespace {
+
+using igaprep::pipeline::Case;
+using igaprep::pipeline::parse_case;
+using pipeline_test::models_dir;
+
+// sphere2's two surfaces and materials, plus `extra` keys (text starting with a comma, or empty).
+std::string sphere2_case(const std::string& extra) {
+  const std::string m = models_dir() + "/sphere2/";
+  return R"({"name": "sphere2-case", "surfaces": [{"file": ")" + m + R"(outer.off", "label": "outer"}, {"file": ")" +
+         m + R"(inner.off", "label": "inner"}], "materials": [{"name": "shell", "young_modulus": 1000, )"
+             R"("poisson_ratio": 0.3}, {"name": "core", "young_modulus": 100, "poisson_ratio": 0.25}])" +
+         extra + "}";
+}
+
+// The message of the bad_input that parsing `text` throws ("" if none).
+std::string refusal(const std::string& text) {
+  try {
+    parse_case(text, models_dir() + "/sphere2", "case.json");
+  } catch (const igaprep::Error& e) {
+    EXPECT_EQ(e.kind(), igaprep::ErrorKind::BadInput) << e.what();
+    return e.what();
+  }
+  return "";
+}
+
+struct Refused {
+  const char* extra;
+  const char* message;
+};
+
+TEST(Case, BadKeysAreRefusedByName) {
+  const Refused cases[] = {
+      {R"(, "tetmesh": {"radius_edge": 2})", "case.json: unknown key 'tetmesh.radius_edge'"},
+      {R"(, "tetmesh": {"max_volume": "big"})", "'tetmesh.max_volume' must be a number"},
+      {R"(, "tetmesh": {"radius_edge_ratio": 1.0})", "greater than 1.0"},
+      {R"(, "export": ["gismo", "stl"])", "'export[1]': unknown export format 'stl'"},
+      {R"(, "export": "gismo")", "'export' must be a list"},
+      {R"(, "validation": {"coarse": 1})", "unknown key 'validation.coarse'"},
+      {R"(, "validation": {"coarse_refine": 2, "fine_refine": 1})", "'validation.fine_refine' must be greater"},
+      {R"(, "validation": {"patches": -1})", "'validation.patches' must lie in"},
+      {R"(, "validation": {"solver": "lu"})", "'validation.solver'"},
+      {R"(, "validation": {"enabled": 1})", "'validation.enabled' must be true or false"},
+      {R"(, "load_case": {"pressure": {"label": "outer", "value": 1}})", "missing key 'load_case.fix'"},
+      {R"(, "load_case": {"fix": "outer", "pressure": {"label": "outer"}})", "missing key 'load_case.pressure.value'"},
+      {R"(, "load_case": {"fix": {"label": "outer", "components": "xw"}})", "'load_case.fix.components'"},
+      {R"(, "load_case": {"fix": [{"label": "outer", "box": [[1, 0, 0], [0, 1, 1]]}]})", "'load_case.fix[0].box'"},
+      {R"(, "load_case": {"fix": "outer", "traction": {"label": "top", "value": [0, 0, 1]}})",
+       "'load_case.traction[0].label': 'top' is not a surface label (labels: outer, inner)"},
+      {R"(, "midsurface": {"colour": 1})", "unknown key 'midsurface.colour'"},
+      {R"(, "midsurface": {"m0": 0.4})", "'midsurface.m0' is no longer read"},
+      {R"(, "midsurface": {"cut": "planar"})", "'midsurface.cut' must be"},
+      {R"(, "midsurface": {"cut": {"plane": {"point": [0, 0, 0]}}})", "needs 'point' and 'normal'"},
+      {R"(, "decomposition": {"colour": 1})", "decomposition.colour"},
+      {R"(, "decomposition": {"strategy": 3})", "'decomposition.strategy' must lie in [1, 2]"},
+      {R"(, "decomposition": {"strategy": 1.5})", "'decomposition.strategy' must be an integer"},
+      {R"(, "decomposition": {"theta": 2.0})", "'decomposition.theta' must be a number in"},
+      {R"(, "decomposition": {"inset": 1.0})", "decomposition.inset"},
+      {R"(, "decomposition": {"smoothing": -1})", "decomposition.smoothing"},
+      {R"(, "decomposition": {"surface_degree": 2.5})", "decomposition.surface_degree"},
+      {R"(, "decomposition": {"surface_degree": 13})", "decomposition.surface_degree"},
+      {R"(, "decomposition": {"sliding_uv": "yes"})", "'decomposition.sliding_uv' must be true or false"},
+      {R"(, "fit": {"elements": 0})", "fit.elements"},
+      {R"(, "fit": {"degree": 2.5})", "fit.degree"},
+      {R"(, "fit": {"knots": 3})", "unknown key 'fit.knots'"},
+      {R"(, "fit": {"jacobian_target": 0.95})", "fit.jacobian_target"},
+      {R"(, "fit": {"jacobian_sweeps": 2.5})", "fit.jacobian_sweeps"},
+      {R"(, "fit": {"jacobian_points": 1})", "fit.jacobian_points"},
+      {R"(, "colour": 1)", "unknown key 'colour'"},
+  };
+  for (const auto& c : cases) {
+    const std::string message = refusal(sphere2_case(c.extra));
+    EXPECT_NE(message.find(c.message), std::string::npos) << c.extra << "\n" << message;
+  }
+}
+
+TEST(Case, SurfacesAndMaterialsAreChecked) {
+  EXPECT_NE(refusal(R"({"surfaces": ["nowhere.stl"]})").find("'surfaces[0]' names a file that does not exist"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"surfaces": []})").find("'surfaces' must be a non-empty list"), std::string::npos);
+  const std::string one = R"({"surfaces": ["outer.off"], "materials": [)";
+  const std::string mat = R"({"name": "a", "young_modulus": 1, "poisson_ratio": 0.3})";
+  EXPECT_NE(refusal(one + mat + ", " + mat + "]}").find("'materials' has 2 entries but there are 1 surfaces"),
+            std::string::npos);
+  EXPECT_NE(refusal(one + R"({"young_modulus": 1, "poisson_ratio": 0.5}]})").find("materials[0].poisson_ratio"),
+            std::string::npos);
+  EXPECT_NE(refusal("{not json").find("case.json: not valid JSON"), std::string::npos);
+}
+
+TEST(Case, ValuesAreReadAndPathsResolved) {
+  const Case c = parse_case(sphere2_case(R"(, "output": "out", "decomposition": {"inset": 0.4, "strategy": 1},
+      "fit": {"elements": 4, "jacobian_target": 0}, "midsurface": {"cut": {"plane": {"point": [0, 0, 0.1],
+      "normal": [0, 0, 2]}}}, "validation": {"solver": "cg", "patches": 0})"),
+                            models_dir() + "/sphere2", "case.json");
+  EXPECT_EQ(c.name, "sphere2-case");
+  EXPECT_EQ(c.output_dir, models_dir() + "/sphere2/out");
+  EXPECT_EQ(c.surfaces.at(1).file, models_dir() + "/sphere2/inner.off");
+  EXPECT_EQ(c.base.inset, 0.4);
+  EXPECT_EQ(c.base.smoothing, 5);  // the one default for M's smoothing
+  EXPECT_EQ(c.volume.strategy, 1);
+  EXPECT_EQ(c.fit.elements, 4);
+  EXPECT_EQ(c.jacobian.target, 0.0);
+  EXPECT_EQ(c.midsurface.cut, igaprep::param::MidsurfaceOptions::CutKind::Plane);
+  EXPECT_EQ(c.midsurface.plane.normal.z(), 2.0);
+  EXPECT_EQ(c.validation.solver, igaprep::pipeline::SolverChoice::ConjugateGradient);
+  EXPECT_EQ(c.validation.patches, 0);
+  EXPECT_EQ(c.materials.at(1).young_modulus, 100.0);
+}
+
+// The built-in case made in memory is the committed case: same surfaces
+// (bit for bit), labels, materials and options.
+TEST(Case, BuiltinCaseEqualsTheCommittedOne) {
+  for (const std::string name : igaprep::models::builtin_model_names()) {
+    const Case b = igaprep::pipeline::builtin_case(name);
+    const Case f = igaprep::pipeline::read_case(models_dir() + "/" + name + "/case.json");
+    ASSERT_EQ(b.surfaces.size(), f.surfaces.size()) << name;
+    EXPECT_EQ(b.name, f.name);
+    for (std::size_t i = 0; i < b.surfaces.size(); ++i) {
+      EXPECT_EQ(b.surfaces[i].label, f.surfaces[i].label);
+      ASSERT_TRUE(b.surfaces[i].mesh.has_value());
+      EXPECT_TRUE(b.surfaces[i].file.empty());
+      EXPECT_EQ(b.materials[i].name, f.materials[i].name);
+      EXPECT_EQ(b.materials[i].young_modulus, f.materials[i].young_modulus);
+      EXPECT_EQ(b.materials[i].poisson_ratio, f.materials[i].poisson_ratio);
+    }
+    // Options: everything after the surfaces is the same text.
+    auto options = [](const Case& c) {
+      nlohmann::json j = nlohmann::json::parse(igaprep::pipeline::case_json(c, "", true));
+      j.erase("surfaces");
+      j.erase("output");
+      return j.dump();
+    };
+    EXPECT_EQ(options(b), options(f)) << name;
+  }
+  EXPECT_THROW(igaprep::pipeline::builtin_case("cube"), igaprep::Error);
+}
+
+// case_json with every option reads back to the same options.
+TEST(Case, AllOptionsJsonReadsBack) {
+  const Case c = parse_case(sphere2_case(R"(, "decomposition": {"inset": 0.4, "theta": 0.9}, "export": ["vtu"],
+      "load_case": {"fix": {"label": "outer", "components": "xz"}, "traction": {"label": "inner", "value": [0, 1, 0]}})"),
+                            models_dir() + "/sphere2", "case.json");
+  const std::string text = igaprep::pipeline::case_json(c, models_dir() + "/sphere2", true);
+  const Case back = parse_case(text, models_dir() + "/sphere2", "back.json");
+  EXPECT_EQ(igaprep::pipeline::case_json(back, models_dir() + "/sphere2", true), text);
+  EXPECT_EQ(back.volume.theta, 0.9);
+  ASSERT_TRUE(back.load_case);
+  EXPECT_FALSE(back.load_case->fix.at(0).components[1]);
+  EXPECT_EQ(back.load_case->traction.at(0).value.y(), 1.0);
+}
+
+}  // namespace

@@ -11,6 +11,8 @@
 #include "igaprep/core/error.h"
 #include "igaprep/iga_check/elasticity_solve.h"
 #include "igaprep/iga_check/manufactured_study.h"
+#include "igaprep/spline/curve_surface.h"
+#include "igaprep/spline/side.h"
 #include "igaprep/spline/submodel.h"
 #include "stage_timer.h"
 #include "text.h"
@@ -19,21 +21,12 @@ namespace igaprep::pipeline {
 
 namespace {
 
-// Mean of the control points of a patch side (sides 1..6: u0, u1, v0, v1, w0, w1).
-Eigen::Vector3d side_centre(const spline::Patch& p, int side) {
-  const int d = (side - 1) / 2;
-  const int fixed = (side % 2 == 1) ? 0 : p.count(d) - 1;
+// Mean of the control points of a patch side.
+Eigen::Vector3d side_centre(const spline::Patch& p, spline::Side side) {
+  const std::vector<int> points = spline::side_control_points(p, side);
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  int n = 0;
-  for (int k = 0; k < p.count(2); ++k)
-    for (int j = 0; j < p.count(1); ++j)
-      for (int i = 0; i < p.count(0); ++i) {
-        const int ijk[3] = {i, j, k};
-        if (ijk[d] != fixed) continue;
-        sum += p.control_points.row(p.index(i, j, k)).transpose();
-        ++n;
-      }
-  return n > 0 ? Eigen::Vector3d(sum / n) : sum;
+  for (int i : points) sum += p.control_points.row(i).transpose();
+  return points.empty() ? sum : Eigen::Vector3d(sum / static_cast<double>(points.size()));
 }
 
 bool in_box(const Eigen::Vector3d& x, const std::array<Eigen::Vector3d, 2>& box) {

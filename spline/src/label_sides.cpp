@@ -6,24 +6,40 @@
 
 namespace igaprep::spline {
 
-int label_sides(MultiPatch& mp, const std::vector<std::array<int, 6>>& side_labels,
-                const std::vector<std::array<bool, 6>>& collapsed) {
-  if (side_labels.size() != mp.patches.size() || collapsed.size() != mp.patches.size())
-    throw internal_error("label_sides: one entry per patch is needed");
+namespace {
+
+// An interface between materials i-1 and i lies on surface i.
+void label_interfaces(MultiPatch& mp) {
   for (auto& itf : mp.interfaces) {
     const int ma = mp.patches[itf.patch_a].material, mb = mp.patches[itf.patch_b].material;
     if (ma != mb) itf.surface = std::max(ma, mb);
   }
+}
+
+// Per patch, by Side::array_index(): whether the side is on an interface.
+std::vector<std::array<bool, 6>> interface_sides(const MultiPatch& mp) {
   std::vector<std::array<bool, 6>> on_interface(mp.patches.size(), std::array<bool, 6>{});
   for (const auto& itf : mp.interfaces) {
-    on_interface[itf.patch_a][itf.side_a - 1] = true;
-    on_interface[itf.patch_b][itf.side_b - 1] = true;
+    on_interface[itf.patch_a][itf.side_a.array_index()] = true;
+    on_interface[itf.patch_b][itf.side_b.array_index()] = true;
   }
+  return on_interface;
+}
+
+}  // namespace
+
+int label_sides(MultiPatch& mp, const std::vector<std::array<int, 6>>& side_labels,
+                const std::vector<std::array<bool, 6>>& collapsed) {
+  if (side_labels.size() != mp.patches.size() || collapsed.size() != mp.patches.size())
+    throw internal_error("label_sides: one entry per patch is needed");
+  label_interfaces(mp);
+  const std::vector<std::array<bool, 6>> on_interface = interface_sides(mp);
   int unmatched = 0;
   for (std::size_t p = 0; p < mp.patches.size(); ++p)
-    for (int s = 0; s < 6; ++s) {
+    for (const Side side : Side::all()) {
+      const int s = side.array_index();
       if (on_interface[p][s]) continue;
-      if (side_labels[p][s] >= 0) mp.boundaries.push_back({static_cast<int>(p), s + 1, side_labels[p][s]});
+      if (side_labels[p][s] >= 0) mp.boundaries.push_back({static_cast<int>(p), side, side_labels[p][s]});
       else if (!collapsed[p][s]) ++unmatched;
     }
   return unmatched;

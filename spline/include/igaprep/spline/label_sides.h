@@ -5,13 +5,15 @@
 #include <vector>
 
 #include "igaprep/spline/multipatch.h"
+#include "igaprep/spline/side.h"
 
 namespace igaprep::spline {
 
 // Inputs: a model whose interfaces are found (find_interfaces.h) and whose
 // patches carry materials 0..n-1 (material i inside surface T(i+1)); per
-// patch and side (G+Smo order) the label of the surface the side lies on
-// (-1: none) and whether the side is collapsed to a curve.
+// patch and side (indexed by Side::array_index(): u0, u1, v0, v1, w0, w1) the
+// label of the surface the side lies on (-1: none) and whether the side is
+// collapsed to a curve.
 // Effect: an interface between materials i-1 and i gets surface i; every side
 // that is not on an interface and has a label becomes a boundary with it.
 // Output: the number of sides left neither on an interface, nor labelled,

@@ -30,7 +30,7 @@ int run_check(const CheckArgs& a) {
   if (!a.case_file.empty()) {
     const pipeline::Case c = pipeline::read_case(a.case_file);
     pipeline::Surfaces s = pipeline::load_surfaces(c);
-    meshes = std::move(s.meshes);
+    meshes = std::move(s.inputs);
     for (const auto& cs : c.surfaces) labels.push_back(cs.label);
   } else {
     for (const std::string& f : a.surfaces) {

@@ -4,7 +4,6 @@
 // mesher was the first choice, but its refinement queue is ordered by memory
 // addresses, so its output changed from one call to the next in one process.)
 #include <Eigen/Geometry>
-#include <CGAL/Polygon_mesh_processing/remesh.h>
 
 #include <algorithm>
 #include <array>
@@ -12,7 +11,7 @@
 #include <vector>
 
 #include "igaprep/mesh/marching_tets.h"
-#include "igaprep/mesh/to_surface_mesh.h"
+#include "igaprep/mesh/remesh_surface.h"
 #include "igaprep/models/shapes.h"
 
 namespace igaprep::models {
@@ -100,13 +99,7 @@ mesh::TriMesh make_three_hole_frame(double tube_radius, double edge_length) {
 
   // Remesh to well-shaped triangles of the target size; Surface_mesh works on
   // indices, so the result depends only on the input.
-  mesh::SurfaceMesh sm = mesh::to_surface_mesh(iso.mesh, "three-hole frame: the contoured surface");
-  CGAL::Polygon_mesh_processing::isotropic_remeshing(faces(sm), edge_length, sm,
-                                                     CGAL::parameters::number_of_iterations(5));
-  // collect_garbage renumbers (it moves the last elements into the gaps):
-  // the model keeps the numbering it has always had.
-  sm.collect_garbage();
-  return mesh::from_surface_mesh(sm);
+  return mesh::remesh_isotropic(iso.mesh, {edge_length, 0.0, 5});
 }
 
 }  // namespace igaprep::models

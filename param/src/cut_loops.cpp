@@ -15,6 +15,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "igaprep/core/error.h"
+#include "igaprep/mesh/principal_axes.h"
 #include "igaprep/core/union_find.h"
 
 namespace igaprep::param {
@@ -214,23 +215,12 @@ CutLoops validate_cut(const mesh::TriMesh& T1, const Eigen::VectorXi& face_side,
   return cut;
 }
 
-CutLoops cut_by_plane(const mesh::TriMesh& T1, const CutPlane& plane, const std::string& name, double snap) {
-  const double nn = plane.normal.norm();
-  if (!(nn > 0.0) || !plane.normal.allFinite() || !plane.point.allFinite())
-    throw bad_input(name + ": the cut plane needs a finite point and a non-zero normal");
-  const Eigen::Vector3d n = plane.normal / nn;
-  const double tol = snap * mean_edge_length(T1);
-  Eigen::VectorXd s(T1.V.rows());
-  for (Eigen::Index i = 0; i < T1.V.rows(); ++i) {
-    const double d = n.dot(T1.V.row(i).transpose() - plane.point);
-    s(i) = std::abs(d) < tol ? 0.0 : d;
-  }
-  std::ostringstream src;
-  src.precision(6);
-  src << "plane through (" << plane.point.transpose() << ") with normal (" << n.transpose() << ")";
-  if (s.maxCoeff() <= 0.0 || s.minCoeff() >= 0.0)
-    throw bad_input(name + ": the " + src.str() + " does not cut the surface into two sides; " + kAdvice);
+namespace {
 
+// T1 with the zero set of a vertex field (already snapped: exact zeros where
+// the loops pass through vertices) inserted as edges, validated as a cut.
+CutLoops insert_zero_set(const mesh::TriMesh& T1, const Eigen::VectorXd& s, const std::string& name,
+                         const std::string& source) {
   mesh::TriMesh m;
   std::vector<Eigen::RowVector3d> V;
   for (Eigen::Index i = 0; i < T1.V.rows(); ++i) V.push_back(T1.V.row(i));
@@ -274,8 +264,8 @@ CutLoops cut_by_plane(const mesh::TriMesh& T1, const CutPlane& plane, const std:
       }
     }
     if (!any)
-      throw bad_input(name + ": the " + src.str() + " contains face " + std::to_string(f) +
-                      " (within the snapping tolerance); move the plane slightly");
+      throw bad_input(name + ": the " + source + " contains face " + std::to_string(f) +
+                      " (within the snapping tolerance); move the cut slightly");
   }
   m.V.resize(static_cast<Eigen::Index>(V.size()), 3);
   for (std::size_t i = 0; i < V.size(); ++i) m.V.row(static_cast<Eigen::Index>(i)) = V[i];
@@ -285,7 +275,64 @@ CutLoops cut_by_plane(const mesh::TriMesh& T1, const CutPlane& plane, const std:
     for (int k = 0; k < 3; ++k) m.F(static_cast<Eigen::Index>(f), k) = faces[f][k];
     side(static_cast<Eigen::Index>(f)) = sides[f];
   }
-  return validate_cut(m, side, name, src.str());
+  return validate_cut(m, side, name, source);
+}
+
+}  // namespace
+
+CutLoops cut_by_plane(const mesh::TriMesh& T1, const CutPlane& plane, const std::string& name, double snap) {
+  const double nn = plane.normal.norm();
+  if (!(nn > 0.0) || !plane.normal.allFinite() || !plane.point.allFinite())
+    throw bad_input(name + ": the cut plane needs a finite point and a non-zero normal");
+  const Eigen::Vector3d n = plane.normal / nn;
+  const double tol = snap * mean_edge_length(T1);
+  Eigen::VectorXd s(T1.V.rows());
+  for (Eigen::Index i = 0; i < T1.V.rows(); ++i) {
+    const double d = n.dot(T1.V.row(i).transpose() - plane.point);
+    s(i) = std::abs(d) < tol ? 0.0 : d;
+  }
+  std::ostringstream src;
+  src.precision(6);
+  src << "plane through (" << plane.point.transpose() << ") with normal (" << n.transpose() << ")";
+  if (s.maxCoeff() <= 0.0 || s.minCoeff() >= 0.0)
+    throw bad_input(name + ": the " + src.str() + " does not cut the surface into two sides; " + kAdvice);
+  return insert_zero_set(T1, s, name, src.str());
+}
+
+
+
+CutLoops cut_by_field(const mesh::TriMesh& T1, const Eigen::VectorXd& field, const std::string& name,
+                      const std::string& source, double snap) {
+  if (field.size() != T1.V.rows() || !field.allFinite())
+    throw internal_error(name + ": the cut field needs one finite value per vertex");
+  // A vertex is on the zero set when it is closer to it than snap * (mean edge
+  // length), the distance estimated from the field's steepest incident edge.
+  Eigen::VectorXd slope = Eigen::VectorXd::Zero(field.size());
+  for (Eigen::Index f = 0; f < T1.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = T1.F(f, k), b = T1.F(f, (k + 1) % 3);
+      const double len = (T1.V.row(a) - T1.V.row(b)).norm();
+      if (!(len > 0.0)) continue;
+      const double g = std::abs(field(a) - field(b)) / len;
+      slope(a) = std::max(slope(a), g);
+      slope(b) = std::max(slope(b), g);
+    }
+  const double tol = snap * mean_edge_length(T1);
+  Eigen::VectorXd s = field;
+  for (Eigen::Index i = 0; i < s.size(); ++i)
+    if (std::abs(s(i)) < tol * slope(i)) s(i) = 0.0;
+  // A face with three snapped corners would lie on the zero set: its corner
+  // farthest from it keeps its value.
+  for (Eigen::Index f = 0; f < T1.F.rows(); ++f) {
+    if (s(T1.F(f, 0)) != 0.0 || s(T1.F(f, 1)) != 0.0 || s(T1.F(f, 2)) != 0.0) continue;
+    int far = T1.F(f, 0);
+    for (int k = 1; k < 3; ++k)
+      if (std::abs(field(T1.F(f, k))) > std::abs(field(far))) far = T1.F(f, k);
+    s(far) = field(far);
+  }
+  if (s.maxCoeff() <= 0.0 || s.minCoeff() >= 0.0)
+    throw bad_input(name + ": the " + source + " does not cut the surface into two sides; " + kAdvice);
+  return insert_zero_set(T1, s, name, source);
 }
 
 CutLoops cut_by_loops(const mesh::TriMesh& T1, const std::vector<std::vector<int>>& loops, const std::string& name) {
@@ -337,34 +384,10 @@ CutLoops cut_by_loops(const mesh::TriMesh& T1, const std::vector<std::vector<int
 }
 
 std::vector<CutPlane> automatic_cut_planes(const mesh::TriMesh& T1) {
-  // Area-weighted centroid and covariance (each face's area split over its corners).
-  double area = 0.0;
-  Eigen::Vector3d c = Eigen::Vector3d::Zero();
-  Eigen::VectorXd w = Eigen::VectorXd::Zero(T1.V.rows());
-  for (int f = 0; f < T1.F.rows(); ++f) {
-    const Eigen::Vector3d a = T1.V.row(T1.F(f, 0)), b = T1.V.row(T1.F(f, 1)), d = T1.V.row(T1.F(f, 2));
-    const double A = 0.5 * (b - a).cross(d - a).norm();
-    area += A;
-    c += A * (a + b + d) / 3.0;
-    for (int k = 0; k < 3; ++k) w(T1.F(f, k)) += A / 3.0;
-  }
-  if (!(area > 0.0)) throw bad_input("automatic cut: the surface has no area");
-  c /= area;
-  Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
-  for (Eigen::Index i = 0; i < T1.V.rows(); ++i) {
-    const Eigen::Vector3d d = T1.V.row(i).transpose() - c;
-    C += w(i) * d * d.transpose();
-  }
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(C);  // ascending eigenvalues
+  const mesh::PrincipalAxes axes = mesh::surface_principal_axes(T1);
+  const Eigen::Vector3d c = axes.centroid;
   std::vector<CutPlane> planes;
-  for (int k = 0; k < 3; ++k) {
-    Eigen::Vector3d n = eig.eigenvectors().col(k);
-    // A deterministic sign: the largest component positive.
-    Eigen::Index i;
-    n.cwiseAbs().maxCoeff(&i);
-    if (n(i) < 0) n = -n;
-    planes.push_back({c, n});
-  }
+  for (int k = 0; k < 3; ++k) planes.push_back({c, axes.axes.col(k)});
   const Eigen::Vector3d n0 = planes[0].normal;
   double lo = 0.0, hi = 0.0;
   for (Eigen::Index i = 0; i < T1.V.rows(); ++i) {

@@ -70,18 +70,40 @@ Eigen::Vector3d FieldProbe::ray_to_level(const Eigen::Vector3d& start, const Eig
       << "): " << why;
     return check_failed(m.str());
   };
+  // The smooth value (recovered gradients) in general; the P1 value where
+  // the smooth one is off: at a start point whose smooth value is not above
+  // the level, and once a step has jumped across a layer thinner than itself
+  // (the recovered gradients of a layer a tet or two thick are unreliable).
+  bool p1 = false;
+  auto field = [&](double t) {
+    return p1 ? value(start + t * direction, &hint) : smooth_value(start + t * direction, &hint);
+  };
   double lo = 0.0;
-  double u0 = smooth_value(start, &hint);
-  if (std::isnan(u0)) hint = -1, u0 = smooth_value(start, &hint);  // the hint was far away: search afresh
+  double u0 = field(0.0);
+  if (std::isnan(u0)) hint = -1, u0 = field(0.0);  // the hint was far away: search afresh
+  if (!(u0 > level) && !std::isnan(u0)) {
+    p1 = true;
+    u0 = field(0.0);
+  }
   if (!(u0 > level)) throw fail("the start point is not above the level");
   for (double t = step; t <= max_length + step; t += step) {
-    const double u = smooth_value(start + t * direction, &hint);
-    if (std::isnan(u)) throw fail("the ray leaves the mesh first");
+    double u = field(t);
+    if (std::isnan(u)) {  // the last point inside, by bisection, must be below the level
+      double in = lo, out = t;
+      for (int it = 0; it < 60 && out - in > 1e-12 * step; ++it) {
+        const double mid = 0.5 * (in + out);
+        (std::isnan(field(mid)) ? out : in) = mid;
+      }
+      p1 = true;
+      u = field(in);
+      if (std::isnan(u) || u > level) throw fail("the ray leaves the mesh first");
+      t = in;
+    }
     if (u <= level) {
       double hi = t;
       for (int it = 0; it < 60 && hi - lo > 1e-12 * step; ++it) {
         const double mid = 0.5 * (lo + hi);
-        (smooth_value(start + mid * direction, &hint) > level ? lo : hi) = mid;
+        (field(mid) > level ? lo : hi) = mid;
       }
       if (start_hint) *start_hint = hint;
       return start + hi * direction;

@@ -1,7 +1,11 @@
 #include "igaprep/param/midsurface_pipeline.h"
 
+#include <optional>
+#include <sstream>
+
 #include "igaprep/core/error.h"
 #include "igaprep/param/sheet_topology.h"
+#include "igaprep/param/thin_sides.h"
 
 namespace igaprep::param {
 namespace {
@@ -60,10 +64,51 @@ bool try_automatic_cut(const std::vector<mesh::TriMesh>& surfaces, const Midsurf
   }
 }
 
-// Principal planes first, then the plane family's shortest valid cuts.
+// The cut between the two sides of a thin solid (thin_sides.h); false (and
+// why, in r.tried) when it is refused.
+bool try_thin_sides_cut(const std::vector<mesh::TriMesh>& surfaces, const ThinSides& sides,
+                        const MidsurfaceOptions& o, const std::string& name, MidsurfaceResult& r) {
+  std::ostringstream src;
+  src.precision(3);
+  src << "thin sides (" << sides.plate_pairs << " plate pairs, median thickness " << sides.median_thickness << ")";
+  CutLoops cut;
+  try {
+    cut = cut_by_field(surfaces[0], sides.vertex_value, name, src.str());
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::BadInput) throw;
+    r.tried.push_back(std::string("thin sides: ") + e.what());
+    return false;
+  }
+  cut.source = "automatic: " + cut.source;
+  return try_automatic_cut(surfaces, o, std::move(cut), r);
+}
+
+// T1's extent along a direction.
+double extent_along(const mesh::TriMesh& T1, const Eigen::Vector3d& d) {
+  const Eigen::VectorXd x = T1.V * d;
+  return x.maxCoeff() - x.minCoeff();
+}
+
+// A solid counts as thin when its plate pairs are, at the median, less than
+// half as far apart as the solid is thick along its smallest principal axis:
+// a propeller (1.5 of 9.7), a pelvis; not an ellipsoid or a ring.
+constexpr double kThinRatio = 0.5;
+
+// For a thin solid the two sides first, then principal planes (a plane
+// across a thin blade makes M0 a narrow ribbon along it); for others the
+// principal planes first. Then the plane family's shortest valid cuts.
 void automatic_midsurface(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOptions& o,
                           const std::string& name, MidsurfaceResult& r) {
   const mesh::TriMesh& T1 = surfaces[0];
+  std::optional<ThinSides> sides;
+  try {
+    sides = thin_sides(T1);
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::BadInput) throw;
+    r.tried.push_back(std::string("thin sides: ") + e.what());
+  }
+  const bool thin = sides && sides->median_thickness < kThinRatio * extent_along(T1, sides->up);
+  if (thin && try_thin_sides_cut(surfaces, *sides, o, name, r)) return;
   for (const CutPlane& p : automatic_cut_planes(T1)) {
     CutLoops cut;
     try {
@@ -76,6 +121,7 @@ void automatic_midsurface(const std::vector<mesh::TriMesh>& surfaces, const Mids
     cut.source = "automatic: " + cut.source;
     if (try_automatic_cut(surfaces, o, std::move(cut), r)) return;
   }
+  if (sides && !thin && try_thin_sides_cut(surfaces, *sides, o, name, r)) return;
   const PlaneFamily family = cut_plane_family(T1, kFamilyNormals, kFamilyOffsets, name);
   r.tried.push_back("plane family: " + std::to_string(family.valid.size()) + " of " + std::to_string(family.tried) +
                     " planes give valid loops; the others:");
@@ -84,7 +130,7 @@ void automatic_midsurface(const std::vector<mesh::TriMesh>& surfaces, const Mids
     if (try_automatic_cut(surfaces, o, family.valid[i], r)) return;
   std::string all;
   for (const auto& t : r.tried) all += "\n  " + t;
-  throw bad_input(name + ": no automatic cut plane gives a valid midsurface:" + all +
+  throw bad_input(name + ": no automatic cut gives a valid midsurface:" + all +
                   "\ngive a plane or explicit loops in the case file's \"midsurface\" section");
 }
 

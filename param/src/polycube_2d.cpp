@@ -243,7 +243,16 @@ std::vector<PolycubeLoop> automatic_corners(const mesh::TriMesh& m, const std::v
     std::array<int, 4> rot{};
     for (int k = 0; k < 4; ++k) rot[k] = pos[(first + k) % 4];
     const bool increasing = rot[0] < rot[1] && rot[1] < rot[2] && rot[2] < rot[3];
-    if (increasing && corners_ok(s, rot, n, 0.05)) {
+    // A long sheet (a blade, a propeller) keeps its corners at its narrow ends
+    // even when the end segments are short.
+    Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
+    for (int v : L.vertices) {
+      const Eigen::Vector2d q(fr.e1.dot(P(m, v) - c), fr.e2.dot(P(m, v) - c));
+      lo = lo.cwiseMin(q);
+      hi = hi.cwiseMax(q);
+    }
+    const bool elongated = hi(0) - lo(0) > 3.0 * (hi(1) - lo(1));
+    if (increasing && (corners_ok(s, rot, n, 0.05) || (elongated && corners_ok(s, rot, n, 0.01)))) {
       L.corners = rot;
     } else {  // evenly by arc length from the first extreme point
       const double total = s.back();
@@ -371,6 +380,30 @@ int refine_hole_corners(mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops
   return total;
 }
 
+// A long sheet whose ends are narrow (a propeller: corners at the blade
+// tips) gets a rectangle as short as its ends, too short for its holes. When
+// a hole takes more than half of the short side, that side grows to the
+// sheet's mean width, area / (long side).
+template <class Sizes>
+void grow_to_fit_holes(const mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops, const Sizes& sizes,
+                       RectilinearDomain& dom) {
+  double area = 0.0;
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    area += 0.5 * (P(m, m.F(f, 1)) - P(m, m.F(f, 0))).cross(P(m, m.F(f, 2)) - P(m, m.F(f, 0))).norm();
+  Eigen::Vector2d need = Eigen::Vector2d::Zero();
+  for (const PolycubeLoop& L : loops)
+    if (!L.outer) {
+      const Eigen::Vector2d h = sizes(L);
+      area += h(0) * h(1);
+      need = need.cwiseMax(h);
+    }
+  double& short_side = dom.width < dom.height ? dom.width : dom.height;
+  const double long_side = std::max(dom.width, dom.height);
+  const double need_short = dom.width < dom.height ? need(0) : need(1);
+  if (short_side >= 2.0 * need_short) return;
+  short_side = std::max(short_side, area / long_side);
+}
+
 RectilinearDomain rectilinear_domain(const mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops) {
   RectilinearDomain dom;
   auto seg_length = [&](const PolycubeLoop& L, int k) {
@@ -394,6 +427,7 @@ RectilinearDomain rectilinear_domain(const mesh::TriMesh& m, const std::vector<P
   dom.width = WH(0);
   dom.height = WH(1);
   if (loops.size() == 1) return dom;
+  grow_to_fit_holes(m, loops, sizes, dom);
 
   // Harmonic map with the outer loop on the rectangle and the holes free.
   RectilinearDomain outer_only = dom;
@@ -670,18 +704,14 @@ std::vector<Eigen::Vector4d> domain_rectangles(const RectilinearDomain& dom) {
   return rects;
 }
 
-Polycube2D polycube_2d(mesh::TriMesh& sheet, const std::vector<std::vector<int>>& loops,
-                       const std::vector<Eigen::Vector3d>& corner_points) {
-  Polycube2D pc;
-  pc.frame = sheet_frame(sheet);
-  pc.loops = corner_points.empty() ? automatic_corners(sheet, loops, pc.frame)
-                                   : corners_from_points(sheet, loops, corner_points, pc.frame);
-  refine_hole_corners(sheet, pc.loops);
-  pc.domain = rectilinear_domain(sheet, pc.loops);
+// The boundary segments and the (u, v) map onto pc.domain: cotangent weights,
+// then mean-value weights, each untangled when it folds.
+void map_to_domain(const mesh::TriMesh& sheet, Polycube2D& pc) {
   pc.segments = boundary_segments(pc.loops, pc.domain);
   std::vector<char> fixed;
   const Eigen::MatrixXd buv = boundary_uv(sheet, pc.segments, fixed);
   for (UvWeights w : {UvWeights::Cotangent, UvWeights::MeanValue}) {
+    pc.weights.clear();
     pc.uv = harmonic_uv(sheet, buv, fixed, w);
     if (uv_jacobians(sheet, pc.uv).minCoeff() <= 0.0 && untangle_uv(sheet, pc.uv, fixed) == 0)
       pc.weights = w == UvWeights::Cotangent ? "cotangent, untangled" : "mean value, untangled";
@@ -690,6 +720,31 @@ Polycube2D polycube_2d(mesh::TriMesh& sheet, const std::vector<std::vector<int>>
     pc.max_jacobian = pc.jacobian.maxCoeff();
     if (pc.weights.find("untangled") == std::string::npos) pc.weights = w == UvWeights::Cotangent ? "cotangent" : "mean value";
     if (pc.min_jacobian > 0.0) break;
+  }
+}
+
+void shrink_holes(RectilinearDomain& dom, double factor) {
+  for (Eigen::Vector4d& h : dom.holes) {
+    const Eigen::Vector2d c(0.5 * (h(0) + h(2)), 0.5 * (h(1) + h(3)));
+    const Eigen::Vector2d half(0.5 * factor * (h(2) - h(0)), 0.5 * factor * (h(3) - h(1)));
+    h << c(0) - half(0), c(1) - half(1), c(0) + half(0), c(1) + half(1);
+  }
+}
+
+Polycube2D polycube_2d(mesh::TriMesh& sheet, const std::vector<std::vector<int>>& loops,
+                       const std::vector<Eigen::Vector3d>& corner_points) {
+  Polycube2D pc;
+  pc.frame = sheet_frame(sheet);
+  pc.loops = corner_points.empty() ? automatic_corners(sheet, loops, pc.frame)
+                                   : corners_from_points(sheet, loops, corner_points, pc.frame);
+  refine_hole_corners(sheet, pc.loops);
+  pc.domain = rectilinear_domain(sheet, pc.loops);
+  // Harmonic maps onto a domain with holes may fold next to the hole corners;
+  // smaller holes (about their centres) leave the map more room.
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    if (attempt > 0) shrink_holes(pc.domain, 0.8);
+    map_to_domain(sheet, pc);
+    if (pc.min_jacobian > 0.0 || pc.domain.holes.empty()) break;
   }
   if (!(pc.min_jacobian > 0.0)) {
     int flipped = 0;

@@ -216,6 +216,9 @@ struct VolumeContext {
   const VolumeParamOptions& options;
   const int n, m;
   const double inner, w0;
+  // Smoothed lids and crests must keep w above this: a tenth of the way
+  // from Tn to T(n+1), so that they stay clear of Tn.
+  double outer_band() const { return inner + 0.1 * (w0 - inner); }
   const TetTopology topo;
   const Eigen::MatrixXd grad;
   FieldProbe probe;
@@ -231,6 +234,33 @@ struct RectGrid {
   Grid2 base, top, bottom;  // top, bottom: the lids (strategy 2) or the streamline starts (strategy 1)
   Grid2 lean;               // the frame's lean at each sample (the crest's binormal on M's boundary)
 };
+
+// Every point inside H with w at least `level` (w = 1 on M, 0 on T1).
+bool within_band(VolumeContext& ctx, const Grid2& points, double level) {
+  for (const Eigen::Vector3d& p : points) {
+    double w = ctx.probe.value(p, &ctx.hint);
+    if (std::isnan(w)) ctx.hint = -1, w = ctx.probe.value(p, &ctx.hint);  // the walk from the hint left H
+    if (std::isnan(w) || w < level) return false;
+  }
+  return true;
+}
+
+// M and the lids of every rectangle smoothed onto polynomials, unless a
+// smoothed surface leaves its band of w: M the core (w >= w0), the lids the
+// layer between T(n+1) and Tn (ctx.outer_band()). On a solid a few tets
+// thick (a blade) the polynomials' bumps are thicker than the solid, and the
+// rectangles are then kept as sampled (all of them: neighbours must match).
+void smooth_rectangles(VolumeContext& ctx, std::vector<RectGrid>& rect) {
+  const int degree = ctx.options.surface_degree;
+  std::vector<RectGrid> smooth = rect;
+  for (RectGrid& g : smooth) {
+    for (Grid2* s : {&g.base, &g.top, &g.bottom}) *s = smooth_grid(*s, ctx.params, degree);
+    if (!within_band(ctx, g.base, ctx.w0) || !within_band(ctx, g.top, ctx.outer_band()) ||
+        !within_band(ctx, g.bottom, ctx.outer_band()))
+      return;
+  }
+  rect = std::move(smooth);
+}
 
 std::vector<RectGrid> sample_rectangles(VolumeContext& ctx) {
   const std::vector<double>& params = ctx.params;
@@ -248,12 +278,11 @@ std::vector<RectGrid> sample_rectangles(VolumeContext& ctx) {
         g.top.push_back(ctx.strategy1 ? ctx.start_point(f, 1.0) : ctx.ray(f, 1.0));
         g.bottom.push_back(ctx.strategy1 ? ctx.start_point(f, -1.0) : ctx.ray(f, -1.0));
       }
-    // The sampled M and lids are piecewise linear with bumps a few samples
-    // wide, which the shell's streamlines carry out to T1 and the fit cannot
-    // follow. T(n+1) need not be exactly w = w0: only between Tn and M.
-    if (!ctx.strategy1 && ctx.options.surface_degree > 0)
-      for (Grid2* s : {&g.base, &g.top, &g.bottom}) *s = smooth_grid(*s, params, ctx.options.surface_degree);
   }
+  // The sampled M and lids are piecewise linear with bumps a few samples
+  // wide, which the shell's streamlines carry out to T1 and the fit cannot
+  // follow. T(n+1) need not be exactly w = w0: only between Tn and M.
+  if (!ctx.strategy1 && ctx.options.surface_degree > 0) smooth_rectangles(ctx, rect);
   return rect;
 }
 
@@ -373,7 +402,12 @@ CrestProfile crest_profile(VolumeContext& ctx, const CrestSegment& seg, const Re
   }
   // The lids' edges P3 and P1 are smooth; P2 follows the ray limits, which
   // are not (the crest is thin: a bump folds it).
-  if (ctx.options.surface_degree > 0) c.P2 = smooth_polyline(c.P2, ctx.params, ctx.options.surface_degree);
+  // Kept as sampled where the smoothed curve would leave the layer beyond
+  // T(n+1) (a thin solid's crest is thinner than the polynomial's bumps).
+  if (ctx.options.surface_degree > 0) {
+    const Grid2 smooth = smooth_polyline(c.P2, ctx.params, ctx.options.surface_degree);
+    if (within_band(ctx, smooth, ctx.outer_band())) c.P2 = smooth;
+  }
   return c;
 }
 

@@ -20,6 +20,20 @@ using nlohmann::json;
 
 namespace {
 
+// "remesh": "auto", false, or a positive edge length.
+void read_remesh(const json& value, const ObjectReader& r, CaseSurface& s) {
+  if (value.is_string() && value.get<std::string>() == "auto") {
+    s.remesh = CaseSurface::Remesh::Auto;
+  } else if (value.is_boolean() && !value.get<bool>()) {
+    s.remesh = CaseSurface::Remesh::Off;
+  } else if (value.is_number() && value.get<double>() > 0.0) {
+    s.remesh = CaseSurface::Remesh::Length;
+    s.remesh_length = value.get<double>();
+  } else {
+    r.fail("'" + r.path("remesh") + "' must be \"auto\", false or a positive edge length, got " + value.dump());
+  }
+}
+
 CaseSurface read_surface_entry(const json& entry, int index, const fs::path& folder, const std::string& file) {
   const std::string where = "surfaces[" + std::to_string(index) + "]";
   CaseSurface s;
@@ -36,6 +50,7 @@ CaseSurface read_surface_entry(const json& entry, int index, const fs::path& fol
     } else if (r.find("inward")) {
       r.fail("'" + r.path("inward") + "' needs 'offset_of' (the surface to offset)");
     }
+    if (const json* remesh = r.find("remesh")) read_remesh(*remesh, r, s);
     r.refuse_unknown();
   }
   if (s.file.empty() == !s.offset_of.has_value())

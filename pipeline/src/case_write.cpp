@@ -30,6 +30,8 @@ json surfaces_json(const Case& c, const std::string& relative_to) {
       e["file"] = relative(s.file, relative_to);
     }
     e["label"] = s.label;
+    if (s.remesh == CaseSurface::Remesh::Off) e["remesh"] = false;
+    if (s.remesh == CaseSurface::Remesh::Length) e["remesh"] = s.remesh_length;
     surfaces.push_back(e);
   }
   return surfaces;

@@ -138,6 +138,10 @@ StageSummary validate_summary(const Surfaces& s, double seconds) {
   std::string line = text("%zu surface(s), nested", s.meshes.size());
   for (std::size_t i = 0; i < s.reports.size(); ++i)
     line += text("; %s: %d faces, genus %d", s.names[i].c_str(), s.reports[i].faces, s.reports[i].genus);
+  for (std::size_t i = 0; i < s.remeshed_to.size(); ++i)
+    if (s.remeshed_to[i] > 0.0)
+      line += text("; %s remeshed (long thin triangles) to edge %g, %d faces", s.names[i].c_str(), s.remeshed_to[i],
+                   static_cast<int>(s.meshes[i].F.rows()));
   return {"validate", seconds, line, {}};
 }
 
@@ -160,7 +164,7 @@ RunResult run(const Case& c, Observer& outer, const RunOptions& o) {
   Fit fit = fit_stage(c, d, param_stage(c, d, observer), observer);
   fill_provenance(c, fit.model);
 
-  Check check = check_stage(fit.model, surfaces.meshes, {}, observer);
+  Check check = check_stage(fit.model, surfaces.inputs, {}, observer);
   r.report = std::move(check.report);
   r.report.model = "model.h5";
   r.report.pipeline = pipeline_section(c, mid, fit, check.figures);

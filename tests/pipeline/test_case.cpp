@@ -165,3 +165,30 @@ TEST(Case, AllOptionsJsonReadsBack) {
 }
 
 }  // namespace
+
+namespace {
+
+// sphere2's outer surface alone with `remesh` set to the JSON text given.
+std::string remesh_case(const std::string& remesh) {
+  return R"({"surfaces": [{"file": ")" + models_dir() + R"(/sphere2/outer.off", "remesh": )" + remesh + "}]}";
+}
+
+TEST(Case, RemeshIsAutoOffOrALength) {
+  using Remesh = igaprep::pipeline::CaseSurface::Remesh;
+  const std::string folder = models_dir() + "/sphere2";
+  EXPECT_EQ(parse_case(remesh_case("\"auto\""), folder, "c.json").surfaces[0].remesh, Remesh::Auto);
+  EXPECT_EQ(parse_case(remesh_case("false"), folder, "c.json").surfaces[0].remesh, Remesh::Off);
+  const Case c = parse_case(remesh_case("0.25"), folder, "c.json");
+  EXPECT_EQ(c.surfaces[0].remesh, Remesh::Length);
+  EXPECT_DOUBLE_EQ(c.surfaces[0].remesh_length, 0.25);
+  // Written back by case_json and read again.
+  const Case back = parse_case(igaprep::pipeline::case_json(c, "", true), folder, "back.json");
+  EXPECT_EQ(back.surfaces[0].remesh, Remesh::Length);
+  EXPECT_DOUBLE_EQ(back.surfaces[0].remesh_length, 0.25);
+  for (const char* bad : {"true", "0", "-1", "\"often\""})
+    EXPECT_NE(refusal(remesh_case(bad)).find("'surfaces[0].remesh' must be \"auto\", false or a positive edge length"),
+              std::string::npos)
+        << bad;
+}
+
+}  // namespace

@@ -41,6 +41,14 @@ int closed_surface_genus(const Eigen::MatrixXi& F);
 CutLoops cut_by_plane(const mesh::TriMesh& T1, const CutPlane& plane, const std::string& name = "T1",
                       double snap = 0.05);
 
+// Inputs: T1 and a field on its vertices. Output: the cut along the field's
+// zero set, inserted into T1 as edges like a plane's (R+ where the field is
+// positive; vertices closer to the zero set than snap * (mean edge length),
+// judged by the field's slope, are on it). `source` names it in reports.
+// Throws bad_input when the field has one sign or the loops are wrong.
+CutLoops cut_by_field(const mesh::TriMesh& T1, const Eigen::VectorXd& field, const std::string& name,
+                      const std::string& source, double snap = 0.05);
+
 // Inputs: T1, loops as cycles of T1 vertex indices (consecutive vertices must
 // share an edge; the last connects to the first). R+ is the region on the left
 // of loops[0] as given (the side whose triangles traverse loops[0][0] ->

@@ -23,6 +23,10 @@ struct CaseSurface {
   std::optional<int> offset_of;     // index of an earlier surface to offset inward
   double inward = 0.0;              // offset distance (model units)
   std::optional<mesh::TriMesh> mesh;  // given in memory (built-in models): no file is read
+  // Remeshing before the method meshes it: automatic (when its triangles are
+  // long and thin, pipeline/surfaces.h), off, or to this edge length.
+  enum class Remesh { Auto, Off, Length } remesh = Remesh::Auto;
+  double remesh_length = 0.0;
 };
 
 struct CaseMaterial {

@@ -1,0 +1,185 @@
+#include "igaprep/param/thin_sides.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "igaprep/core/error.h"
+#include "igaprep/core/union_find.h"
+#include "igaprep/mesh/principal_axes.h"
+#include "igaprep/mesh/ray_caster.h"
+
+namespace igaprep::param {
+namespace {
+
+using Triplets = std::vector<Eigen::Triplet<double>>;
+
+struct FaceGeometry {
+  Eigen::MatrixXd normal, centroid;  // #F x 3
+  Eigen::VectorXd area;
+};
+
+FaceGeometry face_geometry(const mesh::TriMesh& m) {
+  FaceGeometry g{Eigen::MatrixXd(m.F.rows(), 3), Eigen::MatrixXd(m.F.rows(), 3), Eigen::VectorXd(m.F.rows())};
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f) {
+    const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
+    const Eigen::Vector3d n = (b - a).cross(c - a);
+    g.area(f) = 0.5 * n.norm();
+    g.normal.row(f) = g.area(f) > 0.0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d::Zero();
+    g.centroid.row(f) = (a + b + c) / 3.0;
+  }
+  return g;
+}
+
+struct PlatePair {
+  int face, opposite;
+  double distance;
+};
+
+// Faces whose inward ray first meets a face turned back towards them.
+std::vector<PlatePair> plate_pairs(const mesh::TriMesh& m, const FaceGeometry& g) {
+  const mesh::RayCaster caster(m);
+  std::vector<PlatePair> pairs;
+  for (int f = 0; f < static_cast<int>(m.F.rows()); ++f) {
+    if (!(g.area(f) > 0.0)) continue;
+    const Eigen::Vector3d n = g.normal.row(f);
+    const auto hit = caster.first_hit(g.centroid.row(f).transpose(), -n, f);
+    if (!hit || !(hit->distance > 0.0)) continue;
+    if (g.normal.row(hit->face).dot(n) > -0.5) continue;
+    pairs.push_back({f, hit->face, hit->distance});
+  }
+  return pairs;
+}
+
+double median_distance(std::vector<PlatePair> pairs) {
+  const auto mid = pairs.begin() + static_cast<std::ptrdiff_t>(pairs.size() / 2);
+  std::nth_element(pairs.begin(), mid, pairs.end(),
+                   [](const PlatePair& a, const PlatePair& b) { return a.distance < b.distance; });
+  return mid->distance;
+}
+
+// Pairs of faces sharing an edge, with the edge's length.
+struct FaceEdge {
+  int a, b;
+  double length;
+};
+
+std::vector<FaceEdge> face_neighbours(const mesh::TriMesh& m) {
+  std::unordered_map<std::uint64_t, int> first;
+  std::vector<FaceEdge> edges;
+  for (int f = 0; f < static_cast<int>(m.F.rows()); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int u = m.F(f, k), v = m.F(f, (k + 1) % 3);
+      const std::uint64_t key = (std::uint64_t(std::min(u, v)) << 32) | std::uint32_t(std::max(u, v));
+      const auto [it, inserted] = first.emplace(key, f);
+      if (!inserted) edges.push_back({it->second, f, (m.V.row(u) - m.V.row(v)).norm()});
+    }
+  return edges;
+}
+
+// Neighbours want equal values: a graph Laplacian whose weights fall across
+// sharp edges (where a rim loop should run).
+void add_neighbour_terms(const FaceGeometry& g, const std::vector<FaceEdge>& edges, double sharpness, Triplets& t) {
+  for (const FaceEdge& e : edges) {
+    const double cosine = g.normal.row(e.a).dot(g.normal.row(e.b));
+    const double spacing = (g.centroid.row(e.a) - g.centroid.row(e.b)).norm();
+    if (!(spacing > 0.0)) continue;
+    const double w = std::exp(-(1.0 - cosine) / sharpness) * e.length / spacing;
+    t.emplace_back(e.a, e.a, w);
+    t.emplace_back(e.b, e.b, w);
+    t.emplace_back(e.a, e.b, -w);
+    t.emplace_back(e.b, e.a, -w);
+  }
+}
+
+// A plate pair wants opposite values: (x_f + x_g)^2 weighted by area / d^2.
+void add_pair_terms(const FaceGeometry& g, const std::vector<PlatePair>& pairs, double max_distance, Triplets& t,
+                    int& used) {
+  for (const PlatePair& p : pairs) {
+    if (p.distance > max_distance) continue;
+    const double w = g.area(p.face) / (p.distance * p.distance);
+    t.emplace_back(p.face, p.face, w);
+    t.emplace_back(p.opposite, p.opposite, w);
+    t.emplace_back(p.face, p.opposite, w);
+    t.emplace_back(p.opposite, p.face, w);
+    ++used;
+  }
+}
+
+// Connected pieces of the faces of one sign (across shared edges).
+std::vector<int> pieces_of_sign(const std::vector<FaceEdge>& edges, const Eigen::VectorXd& x, int sign) {
+  UnionFind uf(static_cast<int>(x.size()));
+  for (const FaceEdge& e : edges)
+    if ((x(e.a) > 0) == (sign > 0) && (x(e.b) > 0) == (sign > 0)) uf.unite(e.a, e.b);
+  std::vector<int> piece(static_cast<std::size_t>(x.size()));
+  for (int f = 0; f < static_cast<int>(x.size()); ++f) piece[static_cast<std::size_t>(f)] = uf.find(f);
+  return piece;
+}
+
+// Every piece of each sign but the largest (by area) changes sign.
+int give_small_pieces_away(const std::vector<FaceEdge>& edges, const Eigen::VectorXd& area, Eigen::VectorXd& x) {
+  int flipped = 0;
+  for (int sign : {1, -1}) {
+    const std::vector<int> piece = pieces_of_sign(edges, x, sign);
+    std::unordered_map<int, double> piece_area;
+    for (int f = 0; f < static_cast<int>(x.size()); ++f)
+      if ((x(f) > 0) == (sign > 0)) piece_area[piece[static_cast<std::size_t>(f)]] += area(f);
+    if (piece_area.size() < 2) continue;
+    const int largest = std::max_element(piece_area.begin(), piece_area.end(),
+                                         [](const auto& a, const auto& b) { return a.second < b.second; })
+                            ->first;
+    flipped += static_cast<int>(piece_area.size()) - 1;
+    for (int f = 0; f < static_cast<int>(x.size()); ++f)
+      if ((x(f) > 0) == (sign > 0) && piece[static_cast<std::size_t>(f)] != largest) x(f) = -x(f);
+  }
+  return flipped;
+}
+
+Eigen::VectorXd vertex_means(const mesh::TriMesh& m, const Eigen::VectorXd& area, const Eigen::VectorXd& x) {
+  Eigen::VectorXd sum = Eigen::VectorXd::Zero(m.V.rows()), weight = Eigen::VectorXd::Zero(m.V.rows());
+  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      sum(m.F(f, k)) += area(f) * x(f);
+      weight(m.F(f, k)) += area(f);
+    }
+  return sum.cwiseQuotient(weight.cwiseMax(1e-300));
+}
+
+}  // namespace
+
+ThinSides thin_sides(const mesh::TriMesh& T1, const ThinSidesOptions& o) {
+  const FaceGeometry g = face_geometry(T1);
+  const std::vector<PlatePair> pairs = plate_pairs(T1, g);
+  if (pairs.empty()) throw bad_input("thin sides: no face of the surface faces another across the solid");
+  ThinSides r;
+  r.median_thickness = median_distance(pairs);
+  r.up = mesh::surface_principal_axes(T1).axes.col(0);
+
+  const std::vector<FaceEdge> edges = face_neighbours(T1);
+  Triplets t;
+  add_neighbour_terms(g, edges, o.sharpness, t);
+  add_pair_terms(g, pairs, o.thin_factor * r.median_thickness, t, r.plate_pairs);
+  // The pull: a small multiple of the area on the diagonal, and n . U on the right.
+  const Eigen::Index nf = T1.F.rows();
+  const double scale = g.area.mean() / (r.median_thickness * r.median_thickness);
+  Eigen::VectorXd rhs(nf);
+  for (Eigen::Index f = 0; f < nf; ++f) {
+    t.emplace_back(f, f, o.pull * scale * g.area(f) / g.area.mean());
+    rhs(f) = g.area(f) * g.normal.row(f).dot(r.up);
+  }
+  Eigen::SparseMatrix<double> A(nf, nf);
+  A.setFromTriplets(t.begin(), t.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
+  if (solver.info() != Eigen::Success) throw internal_error("thin sides: the side field's matrix is singular");
+  r.face_value = solver.solve(rhs);
+  r.flipped_pieces = give_small_pieces_away(edges, g.area, r.face_value);
+  r.vertex_value = vertex_means(T1, g.area, r.face_value);
+  return r;
+}
+
+}  // namespace igaprep::param

@@ -144,7 +144,11 @@ MidsurfaceResult build_midsurface(const std::vector<mesh::TriMesh>& surfaces, co
   if (o.cut == MidsurfaceOptions::CutKind::Automatic) {
     automatic_midsurface(surfaces, o, name, r);
   } else {
-    r.cut = o.cut == MidsurfaceOptions::CutKind::Plane ? cut_by_plane(T1, o.plane, name) : cut_by_loops(T1, o.loops, name);
+    switch (o.cut) {
+      case MidsurfaceOptions::CutKind::Plane: r.cut = cut_by_plane(T1, o.plane, name); break;
+      case MidsurfaceOptions::CutKind::Waypoints: r.cut = cut_by_waypoints(T1, o.waypoints, name); break;
+      default: r.cut = cut_by_loops(T1, o.loops, name);
+    }
     complete_midsurface(surfaces, o, r);
   }
   return r;

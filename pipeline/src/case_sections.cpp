@@ -38,10 +38,26 @@ void read_cut_loops(const json& loops, const ObjectReader& r, param::MidsurfaceO
   o.cut = param::MidsurfaceOptions::CutKind::Loops;
 }
 
+// "waypoints": a list of loops, each a list of points [x, y, z].
+void read_cut_waypoints(const json& loops, const std::string& file, const ObjectReader& r,
+                        param::MidsurfaceOptions& o) {
+  if (!loops.is_array() || loops.empty())
+    r.fail("'midsurface.cut.waypoints' must be a non-empty list of loops, each a list of points [x, y, z]");
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    const std::string where = "midsurface.cut.waypoints[" + std::to_string(l) + "]";
+    if (!loops[l].is_array() || loops[l].size() < 3) r.fail("'" + where + "' must be a list of at least 3 points");
+    std::vector<Eigen::Vector3d> loop;
+    for (std::size_t i = 0; i < loops[l].size(); ++i)
+      loop.push_back(read_vector3(loops[l][i], where + "[" + std::to_string(i) + "]", file));
+    o.waypoints.push_back(std::move(loop));
+  }
+  o.cut = param::MidsurfaceOptions::CutKind::Waypoints;
+}
+
 void read_cut(const json& cut, const std::string& file, param::MidsurfaceOptions& o) {
   if (cut.is_string()) {
     if (cut.get<std::string>() != "auto")
-      throw bad_input(file + ": 'midsurface.cut' must be \"auto\", {\"plane\": ...} or {\"loops\": ...}, got \"" +
+      throw bad_input(file + ": 'midsurface.cut' must be \"auto\", {\"plane\": ...}, {\"loops\": ...} or {\"waypoints\": ...}, got \"" +
                       cut.get<std::string>() + "\"");
     return;
   }
@@ -50,10 +66,13 @@ void read_cut(const json& cut, const std::string& file, param::MidsurfaceOptions
   ObjectReader r(cut, "midsurface.cut", file);
   const json* plane = r.find("plane");
   const json* loops = r.find("loops");
+  const json* waypoints = r.find("waypoints");
   r.refuse_unknown();
-  if (!plane == !loops) r.fail("'midsurface.cut' needs exactly one of 'plane' and 'loops'");
+  if ((plane != nullptr) + (loops != nullptr) + (waypoints != nullptr) != 1)
+    r.fail("'midsurface.cut' needs exactly one of 'plane', 'loops' and 'waypoints'");
   if (plane) read_cut_plane(*plane, file, o);
-  else read_cut_loops(*loops, r, o);
+  else if (loops) read_cut_loops(*loops, r, o);
+  else read_cut_waypoints(*waypoints, file, r, o);
 }
 
 }  // namespace

@@ -82,6 +82,14 @@ void add_stage_options(const Case& c, json& root) {
                              {"normal", {p.normal.x(), p.normal.y(), p.normal.z()}}}}};
   } else if (c.midsurface.cut == param::MidsurfaceOptions::CutKind::Loops) {
     mid["cut"] = {{"loops", c.midsurface.loops}};
+  } else if (c.midsurface.cut == param::MidsurfaceOptions::CutKind::Waypoints) {
+    json loops = json::array();
+    for (const auto& loop : c.midsurface.waypoints) {
+      json points = json::array();
+      for (const auto& p : loop) points.push_back({p.x(), p.y(), p.z()});
+      loops.push_back(points);
+    }
+    mid["cut"] = {{"waypoints", loops}};
   } else {
     mid["cut"] = "auto";
   }

@@ -1,5 +1,7 @@
 #include "igaprep/pipeline/midsurface.h"
 
+#include "igaprep/core/error.h"
+
 #include "igaprep/mesh/tet_volume.h"
 #include "stage_timer.h"
 #include "text.h"
@@ -124,6 +126,10 @@ std::string uv_note(const param::BaseSurfaceOptions& o, const param::BaseSurface
 
 param::MidsurfaceResult midsurface_stage(const Case& c, const Surfaces& surfaces, Observer& observer) {
   StageTimer timer;
+  if (c.midsurface.cut == param::MidsurfaceOptions::CutKind::Loops && surfaces.remeshed_to.at(0) > 0.0)
+    throw bad_input("'midsurface.cut.loops' numbers the vertices of " + surfaces.names.at(0) +
+                    " as given, but it was remeshed (long thin triangles): give the loops as 'waypoints' "
+                    "or set the surface's 'remesh' to false");
   param::MidsurfaceResult r = param::build_midsurface(surfaces.meshes, c.midsurface, surfaces.names.at(0));
   StageSummary s{"midsurface", timer.seconds(), text("genus %d, cut: %s", r.cut.genus, r.cut.source.c_str()), {}};
   s.details = tet_lines(c, r.tets);

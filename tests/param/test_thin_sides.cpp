@@ -69,3 +69,47 @@ TEST(CutByField, AFieldOfOneSignIsRefused) {
 }
 
 }  // namespace
+
+namespace {
+
+// n points on the circle of radius r in the plane z = 0, counter-clockwise seen from +z.
+std::vector<Eigen::Vector3d> circle(double rx, double ry, int n) {
+  std::vector<Eigen::Vector3d> p;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2.0 * M_PI * i / n;
+    p.emplace_back(rx * std::cos(t), ry * std::sin(t), 0.0);
+  }
+  return p;
+}
+
+TEST(CutByWaypoints, EightPointsOnAPancakesRimGiveItsRimAsTheLoop) {
+  const TriMesh pancake = igaprep::models::make_ellipsoid(10.0, 6.0, 0.8, 4);
+  const igaprep::param::CutLoops cut = igaprep::param::cut_by_waypoints(pancake, {circle(10.0, 6.0, 8)}, "pancake");
+  ASSERT_EQ(cut.loops.size(), 1u);
+  EXPECT_LT(loops_max_height(cut), 0.3);  // smoothed edge paths near the rim z = 0 (half-thickness 0.8)
+  // R+ on the left of the loop as drawn (counter-clockwise from +z): the top.
+  for (Eigen::Index i = 0; i < cut.surface.V.rows(); ++i)
+    if (std::abs(cut.surface.V(i, 2)) > 0.5) EXPECT_EQ(cut.vertex_side(i) > 0, cut.surface.V(i, 2) > 0) << i;
+}
+
+TEST(CutByWaypoints, ARingsTwoRimsFromTwoDrawnLoops) {
+  const TriMesh ring = igaprep::models::make_torus(5.0, 0.5, 96, 24);
+  const igaprep::param::CutLoops cut =
+      igaprep::param::cut_by_waypoints(ring, {circle(5.5, 5.5, 8), circle(4.5, 4.5, 8)}, "ring");
+  EXPECT_EQ(cut.loops.size(), 2u);
+  EXPECT_LT(loops_max_height(cut), 0.2);
+}
+
+TEST(CutByWaypoints, PointsSnappingToOneVertexAreRefused) {
+  const TriMesh pancake = igaprep::models::make_ellipsoid(10.0, 6.0, 0.8, 3);
+  const Eigen::Vector3d p(10.0, 0.0, 0.0);
+  try {
+    igaprep::param::cut_by_waypoints(pancake, {{p, p, p}}, "pancake");
+    FAIL() << "no error";
+  } catch (const igaprep::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("waypoint loop 0: the waypoints snap to fewer than 3"), std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace

@@ -192,3 +192,27 @@ TEST(Case, RemeshIsAutoOffOrALength) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Case, WaypointLoopsAreReadAndWrittenBack) {
+  const std::string folder = models_dir() + "/sphere2";
+  const Case c = parse_case(
+      sphere2_case(R"(, "midsurface": {"cut": {"waypoints": [[[1, 0, 0], [0, 1, 0], [-1, 0, 0], [0, -1, 0]]]}})"),
+      folder, "c.json");
+  ASSERT_EQ(c.midsurface.cut, igaprep::param::MidsurfaceOptions::CutKind::Waypoints);
+  ASSERT_EQ(c.midsurface.waypoints.size(), 1u);
+  ASSERT_EQ(c.midsurface.waypoints[0].size(), 4u);
+  EXPECT_DOUBLE_EQ(c.midsurface.waypoints[0][3].y(), -1.0);
+  const Case back = parse_case(igaprep::pipeline::case_json(c, "", true), folder, "back.json");
+  ASSERT_EQ(back.midsurface.waypoints.size(), 1u);
+  EXPECT_DOUBLE_EQ(back.midsurface.waypoints[0][1].y(), 1.0);
+  EXPECT_NE(refusal(sphere2_case(R"(, "midsurface": {"cut": {"waypoints": [[[1, 0, 0], [0, 1, 0]]]}})"))
+                .find("'midsurface.cut.waypoints[0]' must be a list of at least 3 points"),
+            std::string::npos);
+  EXPECT_NE(refusal(sphere2_case(R"(, "midsurface": {"cut": {"waypoints": [], "loops": []}})"))
+                .find("needs exactly one of 'plane', 'loops' and 'waypoints'"),
+            std::string::npos);
+}
+
+}  // namespace

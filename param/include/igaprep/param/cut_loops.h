@@ -58,6 +58,17 @@ CutLoops cut_by_field(const mesh::TriMesh& T1, const Eigen::VectorXd& field, con
 CutLoops cut_by_loops(const mesh::TriMesh& T1, const std::vector<std::vector<int>>& loops,
                       const std::string& name = "T1");
 
+// Inputs: T1 and loops drawn as waypoints (at least 3 points per loop, in
+// order; R+ lies on the left of the first loop as drawn, seen from outside).
+// Each point snaps to the nearest T1 vertex and consecutive ones, the last
+// and the first too, are joined by the shortest edge path on T1. The cut is
+// then the zero set of the paths' sides smoothed by three rounds of
+// neighbour averaging (no staircase along the triangles), or the edge paths
+// themselves when the smoothed set is refused. Throws bad_input naming the
+// loop when its points snap to fewer than 3 vertices, and as cut_by_loops.
+CutLoops cut_by_waypoints(const mesh::TriMesh& T1, const std::vector<std::vector<Eigen::Vector3d>>& waypoints,
+                          const std::string& name = "T1");
+
 // Candidate planes for the automatic cut, best first: through the area
 // centroid of T1 with the normal along the smallest principal axis of its
 // area-weighted covariance, then the middle and largest axes, then the

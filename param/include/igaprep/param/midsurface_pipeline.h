@@ -21,10 +21,11 @@
 namespace igaprep::param {
 
 struct MidsurfaceOptions {
-  enum class CutKind { Automatic, Plane, Loops };
+  enum class CutKind { Automatic, Plane, Loops, Waypoints };
   CutKind cut = CutKind::Automatic;
   CutPlane plane;                        // CutKind::Plane
   std::vector<std::vector<int>> loops;   // CutKind::Loops: T1 vertex indices
+  std::vector<std::vector<Eigen::Vector3d>> waypoints;  // CutKind::Waypoints: points per loop
   std::vector<Eigen::Vector3d> corners;  // corner points (4 per boundary loop of M0trim); empty = automatic
   bool path_lengths = true;              // trace the quality paths (section 4.1)
   mesh::TetgenOptions tetgen;

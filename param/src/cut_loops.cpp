@@ -37,7 +37,7 @@ std::unordered_map<std::uint64_t, std::vector<int>> edge_faces(const Eigen::Matr
 
 const char* kAdvice =
     "give a plane ({\"midsurface\": {\"cut\": {\"plane\": {\"point\": [x,y,z], \"normal\": [x,y,z]}}}}) "
-    "or explicit loops ({\"cut\": {\"loops\": [[T1 vertex indices], ...]}}) in the case file";
+    "or loops drawn as points ({\"cut\": {\"waypoints\": [[[x,y,z], ...], ...]}}) in the case file";
 
 double mean_edge_length(const mesh::TriMesh& m) {
   double sum = 0.0;

@@ -131,7 +131,7 @@ void automatic_midsurface(const std::vector<mesh::TriMesh>& surfaces, const Mids
   std::string all;
   for (const auto& t : r.tried) all += "\n  " + t;
   throw bad_input(name + ": no automatic cut gives a valid midsurface:" + all +
-                  "\ngive a plane or explicit loops in the case file's \"midsurface\" section");
+                  "\ngive a plane or loops drawn as waypoints in the case file's \"midsurface\" section");
 }
 
 }  // namespace

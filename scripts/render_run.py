@@ -1,0 +1,101 @@
+#!/usr/bin/python3
+"""Pictures of one `igaprep run` output folder, rendered off screen with VTK.
+
+Usage (Debian: python3-vtk9 and xvfb, both installed by scripts/setup.sh):
+    xvfb-run -a /usr/bin/python3 scripts/render_run.py OUTPUT_DIR PREFIX
+
+OUTPUT_DIR is a run's output written with `--keep-intermediate` and the
+case's export "vtu" (model.vtu). Writes PREFIX_sides.png (T1 coloured by
+cut region, with the cut loops), PREFIX_midsurface.png (M0trim coloured by
+u) and PREFIX_patches.png (the model coloured by patch, T1 translucent),
+each from above and from an oblique view.
+"""
+import os
+import sys
+
+import vtk
+
+
+def read(path):
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def actor(data, array=None, colour=(0.75, 0.75, 0.75), opacity=1.0, line_width=1.0):
+    surface = vtk.vtkDataSetSurfaceFilter()
+    surface.SetInputData(data)
+    if data.GetCellData().GetArray("HigherOrderDegrees") is not None:
+        surface.SetNonlinearSubdivisionLevel(2)  # Bezier cells drawn curved
+    mapper = vtk.vtkPolyDataMapper()
+    mapper.SetInputConnection(surface.GetOutputPort())
+    mapper.ScalarVisibilityOff()
+    if array:
+        cells = data.GetCellData().GetArray(array)
+        values = cells if cells is not None else data.GetPointData().GetArray(array)
+        if cells is not None:
+            mapper.SetScalarModeToUseCellFieldData()
+        else:
+            mapper.SetScalarModeToUsePointFieldData()
+        mapper.SelectColorArray(array)
+        mapper.SetScalarRange(values.GetRange())
+        mapper.ScalarVisibilityOn()
+    a = vtk.vtkActor()
+    a.SetMapper(mapper)
+    a.GetProperty().SetColor(*colour)
+    a.GetProperty().SetOpacity(opacity)
+    a.GetProperty().SetLineWidth(line_width)
+    return a
+
+
+def render(actors, path, views=((0, 0, 1), (1, -1, 0.6))):
+    renderer = vtk.vtkRenderer()
+    renderer.SetBackground(1, 1, 1)
+    for a in actors:
+        renderer.AddActor(a)
+    window = vtk.vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.AddRenderer(renderer)
+    window.SetSize(900, 600)
+    images = vtk.vtkImageAppend()
+    images.SetAppendAxis(0)
+    for view in views:
+        renderer.ResetCamera()
+        camera = renderer.GetActiveCamera()
+        focal, distance = camera.GetFocalPoint(), camera.GetDistance()
+        camera.SetPosition(*(focal[k] + view[k] * distance for k in range(3)))
+        camera.SetViewUp(*((0, 1, 0) if abs(view[2]) > 0.9 else (0, 0, 1)))
+        renderer.ResetCamera()
+        window.Render()
+        grab = vtk.vtkWindowToImageFilter()
+        grab.SetInput(window)
+        grab.Update()
+        image = vtk.vtkImageData()
+        image.DeepCopy(grab.GetOutput())
+        images.AddInputData(image)
+    images.Update()
+    writer = vtk.vtkPNGWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(images.GetOutput())
+    writer.Write()
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    folder, prefix = sys.argv[1], sys.argv[2]
+    regions = os.path.join(folder, "midsurface_t1_regions.vtu")
+    loops = os.path.join(folder, "midsurface_loops.vtu")
+    if os.path.exists(regions):
+        render([actor(read(regions), "region"), actor(read(loops), colour=(0, 0, 0), line_width=3)],
+               prefix + "_sides.png")
+        render([actor(read(os.path.join(folder, "midsurface_m0trim.vtu")), "u")], prefix + "_midsurface.png")
+    model = os.path.join(folder, "model.vtu")
+    if os.path.exists(model):
+        shell = [actor(read(regions), opacity=0.25)] if os.path.exists(regions) else []
+        render([actor(read(model), "patch")] + shell, prefix + "_patches.png")
+
+
+if __name__ == "__main__":
+    main()

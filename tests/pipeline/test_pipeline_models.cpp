@@ -155,7 +155,9 @@ TEST(PipelineModels, Torus3MeetsEveryCriterion) { expect_model_meets_every_crite
 TEST(PipelineModels, Sphere2Strategy1Completes) {
   Recorder rec;
   const RunResult r = igaprep::pipeline::run(
-      model_case("sphere2", R"({"decomposition": {"strategy": 1}, "validation": {"enabled": false}})"), rec,
+      model_case("sphere2", R"({"decomposition": {"strategy": 1}, "validation": {"enabled": false}})",
+                 "sphere2_strategy1"),  // its own folder: ctest runs the tests in parallel
+      rec,
       {"", false});
   EXPECT_NE(rec.stages.at(4).headline.find("strategy 1"), std::string::npos) << rec.stages.at(4).headline;
   EXPECT_EQ(figure(r, "degenerate_elements"), 4 * 6 * 6);

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -95,6 +96,18 @@ Eigen::VectorXd midsurface_field(const mesh::TetMesh& tets, const CutLoops& cut)
   return solver.solve({1.0, -1.0, 0.0});
 }
 
+namespace {
+
+// The centroid of tet c, for messages.
+std::string point_text(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, int c) {
+  const Eigen::RowVector3d p = 0.25 * (V.row(T(c, 0)) + V.row(T(c, 1)) + V.row(T(c, 2)) + V.row(T(c, 3)));
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%.4g, %.4g, %.4g", p(0), p(1), p(2));
+  return buf;
+}
+
+}  // namespace
+
 Midsurface zero_sheet(const mesh::TetMesh& tets, const Eigen::VectorXd& f, Eigen::Index num_fixed, double snap) {
   const Eigen::MatrixXd& V = tets.V;
   const Eigen::MatrixXi& T = tets.T;
@@ -157,7 +170,9 @@ Midsurface zero_sheet(const mesh::TetMesh& tets, const Eigen::VectorXd& f, Eigen
       const int v = T(c, k);
       (g(v) > 0.0 ? P : (g(v) < 0.0 ? N : Z)).push_back(v);
     }
-    if (Z.size() == 4) throw internal_error("midsurface: all four vertices of tet " + std::to_string(c) + " are at f = 0");
+    if (Z.size() == 4)
+      throw bad_input("all four vertices of tet " + std::to_string(c) + " (near (" + point_text(V, T, c) +
+                      ")) are at f = 0: the cut loops run closer together there than a tet is wide");
     if (P.empty() && N.empty()) continue;
     if ((P.empty() || N.empty()) && Z.size() != 3) continue;  // touches f = 0 in a vertex or an edge at most
     Eigen::Matrix<double, 4, 3> gp;
@@ -226,7 +241,15 @@ Midsurface extract_midsurface(const mesh::TetMesh& tets, const CutLoops& cut, co
   const int wanted = cut.genus + 1;
   std::string problem;
   for (double s : {snap, 0.0}) {
-    Midsurface m = zero_sheet(tets, f, n1, s);
+    Midsurface m;
+    try {
+      m = zero_sheet(tets, f, n1, s);
+    } catch (const Error& e) {  // snapping can put a whole tet at 0: try without it
+      if (e.kind() != ErrorKind::BadInput) throw;
+      problem = std::string("the midsurface M0: ") + e.what();
+      if (s == 0.0) break;
+      continue;
+    }
     const SheetTopology topo = analyze_sheet(m.mesh.F, m.mesh.V.rows());
     problem = describe_sheet_problem(topo, wanted, "the midsurface M0");
     if (problem.empty()) {

@@ -95,7 +95,14 @@ StreamlineColumn trace_column(const FieldProbe& probe, const Eigen::Vector3d& st
     ws.push_back(probe.value(end, &hint));
     return column();
   }
-  throw fail("no exit through T1 within " + std::to_string(max_steps) + " steps");
+  // Caught at an extremum of the discrete w inside the solid (the decompose
+  // stage counts them): a property of the mesh and cut, which the user can
+  // change, not a failed check of a built model.
+  std::ostringstream m;
+  m << "param: the streamline from (" << start.transpose() << ") finds no exit through T1 within " << max_steps
+    << " steps: it is caught where the discrete w has an extremum inside the solid; a finer tet mesh "
+       "('tetmesh.max_volume') or other cut loops ('midsurface.cut') can remove it";
+  throw bad_input(m.str());
 }
 
 }  // namespace igaprep::param

@@ -108,3 +108,25 @@ TEST(MidsurfaceRefusal, PlaneAcrossTheTubeGivesTwoSheets) {
     EXPECT_NE(std::string(e.what()).find("2 separate pieces"), std::string::npos) << e.what();
   }
 }
+
+namespace {
+
+TEST(MidsurfaceRefusal, ATetWithFourVerticesOnTheLoopsIsBadInputNamingIt) {
+  mesh::TetMesh tets;
+  tets.V.resize(4, 3);
+  tets.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  tets.T.resize(1, 4);
+  tets.T << 0, 1, 2, 3;
+  const Eigen::VectorXd f = Eigen::VectorXd::Zero(4);
+  try {
+    zero_sheet(tets, f, 4, 0.0);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+    EXPECT_NE(std::string(e.what()).find("all four vertices of tet 0 (near (0.25, 0.25, 0.25)) are at f = 0"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace

@@ -40,7 +40,7 @@ struct Midsurface {
 // edge of it would be cut within snap of its length from it is snapped to 0
 // (no slivers); vertices at exactly 0 are vertices of M0, so the loop vertices
 // are M0's boundary, exactly. Output: the zero set as a triangle sheet.
-// Throws internal_error when four vertices of one tet are at 0.
+// Throws bad_input when four vertices of one tet are at 0 (naming where).
 Midsurface zero_sheet(const mesh::TetMesh& tets, const Eigen::VectorXd& f, Eigen::Index num_fixed, double snap);
 
 // The whole step: f, its zero sheet, checked to be a single manifold sheet of

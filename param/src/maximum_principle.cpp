@@ -35,4 +35,22 @@ std::vector<LocalExtremum> find_interior_extrema(const Eigen::SparseMatrix<doubl
   return out;
 }
 
+int flatten_interior_extrema(const Eigen::SparseMatrix<double>& K, Eigen::VectorXd& u,
+                             const std::vector<char>& is_dirichlet, double tolerance, int max_rounds) {
+  int changed = 0;
+  for (int round = 0; round < max_rounds; ++round) {
+    const std::vector<LocalExtremum> extrema = find_interior_extrema(K, u, is_dirichlet, tolerance);
+    if (extrema.empty()) break;
+    for (const LocalExtremum& e : extrema) {
+      double sum = 0.0;
+      int count = 0;
+      for (Eigen::SparseMatrix<double>::InnerIterator it(K, e.vertex); it; ++it)
+        if (it.index() != e.vertex) sum += u(it.index()), ++count;
+      u(e.vertex) = sum / count;
+      ++changed;
+    }
+  }
+  return changed;
+}
+
 }  // namespace igaprep::param

@@ -41,6 +41,9 @@ WField w_field(const DecompositionMesh& H, HarmonicSolverOptions options) {
   out.min_value = out.w.minCoeff();
   out.max_value = out.w.maxCoeff();
   out.extrema = find_interior_extrema(out.K, out.w, out.is_dirichlet, 1e-9);
+  // Streamlines of -grad w would be caught at them (obtuse tets break the
+  // discrete maximum principle): each takes its neighbours' mean.
+  if (!out.extrema.empty()) out.flattened = flatten_interior_extrema(out.K, out.w, out.is_dirichlet, 1e-9);
   return out;
 }
 

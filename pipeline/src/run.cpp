@@ -1,5 +1,6 @@
 #include "igaprep/pipeline/run.h"
 
+#include <cmath>
 #include <filesystem>
 
 #include "igaprep/core/error.h"
@@ -69,8 +70,26 @@ iga_check::PipelineSection pipeline_section(const Case& c, const param::Midsurfa
   return p;
 }
 
-std::string verdict_of(const iga_check::CheckReport& report, const iga_check::PipelineSection& p) {
+// What a model must meet beyond the check's positive elements to pass a run:
+// its boundary within 0.5 % of the diagonal of every input surface it stands
+// for (both ways), and every material volume within 0.5 % of the input's.
+// A model that misses part of the solid has only positive elements too.
+constexpr double kFidelityLimit = 0.005, kVolumeLimit = 0.005;
+
+// Empty when the figures are within those limits, else what is not.
+std::string geometry_shortfall(const CheckFigures& f) {
+  std::string out;
+  for (double x : f.fidelity)
+    if (!(x <= kFidelityLimit)) out += text("%sfidelity %.3f %% > 0.5 %%", out.empty() ? "" : ", ", 100.0 * x);
+  for (double x : f.volume_difference)
+    if (!(std::abs(x) <= kVolumeLimit)) out += text("%svolume %+.3f %% beyond 0.5 %%", out.empty() ? "" : ", ", 100.0 * x);
+  return out;
+}
+
+std::string verdict_of(const iga_check::CheckReport& report, const iga_check::PipelineSection& p,
+                       const std::string& shortfall) {
   std::string verdict = report.passed ? "check passed" : "check FAILED";
+  if (!shortfall.empty()) verdict += "; geometry FAILED (" + shortfall + ")";
   if (!p.validation)
     verdict += "; validation off";
   else if (!p.validation->ran)
@@ -176,8 +195,9 @@ RunResult run(const Case& c, Observer& outer, const RunOptions& o) {
   if (c.validation.enabled) p.validation = validation_stage(r.model, r.report, c.validation, observer);
   if (c.load_case) run_load_case(c, observer, o, r, stages);
   p.stages = stages;
-  p.passed = r.report.passed && (!p.validation || p.validation->met);
-  p.verdict = verdict_of(r.report, p);
+  const std::string shortfall = geometry_shortfall(check.figures);
+  p.passed = r.report.passed && shortfall.empty() && (!p.validation || p.validation->met);
+  p.verdict = verdict_of(r.report, p, shortfall);
   r.passed = p.passed;
   write_report(r, o);
   return r;

@@ -74,9 +74,9 @@ Decomposition decompose_stage(const Case& c, const Surfaces& surfaces, const par
   d.layout = param::base_layout(base.m);
   d.diagonal = (d.H.tets.V.colwise().maxCoeff() - d.H.tets.V.colwise().minCoeff()).norm();
   StageSummary s{"decompose", timer.seconds(),
-                 text("H: %lld vertices, %lld tets; w: %zu interior extrema; M: %zu rectangles, %zu boundary segments",
+                 text("H: %lld vertices, %lld tets; w: %zu interior extrema (%d values flattened); M: %zu rectangles, %zu boundary segments",
                       static_cast<long long>(d.H.tets.V.rows()), static_cast<long long>(d.H.tets.T.rows()),
-                      d.w.extrema.size(), d.layout.rectangles.size(), d.layout.crests.size()),
+                      d.w.extrema.size(), d.w.flattened, d.layout.rectangles.size(), d.layout.crests.size()),
                  {}};
   observer.stage_finished(s);
   offer_intermediate(observer, "decomposition_w", [&] {

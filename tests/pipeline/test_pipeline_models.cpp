@@ -191,3 +191,21 @@ TEST(PipelineModels, LoadCaseBoxWithoutSidesIsNamedAndTheReportKept) {
 }
 
 }  // namespace
+
+namespace {
+
+// A model with only positive elements that misses part of the solid fails the
+// run: one element per direction leaves sphere2 2.2 % off its outer surface.
+TEST(PipelineModels, AModelOffItsSurfacesFailsTheRunNamingTheFigures) {
+  const auto c = model_case("sphere2", R"({"fit": {"elements": 1, "jacobian_target": 0},
+      "validation": {"enabled": false}})", "sphere2_coarse");
+  igaprep::pipeline::Observer quiet;
+  const RunResult r = igaprep::pipeline::run(c, quiet, {"", false});
+  EXPECT_TRUE(r.report.passed) << "every element positive";
+  EXPECT_FALSE(r.passed);
+  const std::string& verdict = r.report.pipeline->verdict;
+  EXPECT_EQ(verdict.rfind("FAIL: check passed; geometry FAILED (fidelity ", 0), 0u) << verdict;
+  EXPECT_GT(figure(r, "fidelity_relative_outer"), 0.005);
+}
+
+}  // namespace

@@ -24,4 +24,11 @@ struct LocalExtremum {
 std::vector<LocalExtremum> find_interior_extrema(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& u,
                                                  const std::vector<char>& is_dirichlet, double tolerance = 1e-12);
 
+// Each strict interior extremum (as found above) takes the mean of its
+// neighbours' values, in rounds until none is left or `max_rounds` have
+// passed (a changed vertex can make a neighbour an extremum). A streamline
+// of -grad u is caught at such a vertex. Returns the number of values changed.
+int flatten_interior_extrema(const Eigen::SparseMatrix<double>& K, Eigen::VectorXd& u,
+                             const std::vector<char>& is_dirichlet, double tolerance = 1e-12, int max_rounds = 50);
+
 }  // namespace igaprep::param

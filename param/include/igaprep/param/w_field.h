@@ -18,7 +18,8 @@ struct WField {
   Eigen::VectorXd w;                       // #H.V
   std::vector<char> is_dirichlet;          // #H.V: on T1..Tn or M
   Eigen::SparseMatrix<double> K;           // the stiffness matrix of H
-  std::vector<LocalExtremum> extrema;      // interior (free-vertex) strict local extrema
+  std::vector<LocalExtremum> extrema;      // interior (free-vertex) strict local extrema of the solve
+  int flattened = 0;                       // values changed to remove them (flatten_interior_extrema)
   double min_value = 0.0, max_value = 0.0;  // over all vertices
   int num_free = 0;
   int cg_iterations = 0;                   // 0 for a direct solve
@@ -32,7 +33,8 @@ inline double w_boundary_value(int k, int n) { return k >= n ? 1.0 : static_cast
 HarmonicSolverOptions w_field_default_options();
 
 // Inputs: H (decomposition_mesh), solver options (its level sets become patch faces). Output: the field with its maximum-principle check
-// (find_interior_extrema, tolerance 1e-9 of the range). Throws bad_input when
+// (find_interior_extrema, tolerance 1e-9 of the range); those extrema are
+// then flattened (w at them is no longer exactly the solve's). Throws bad_input when
 // H is malformed (from the solver).
 WField w_field(const DecompositionMesh& H, HarmonicSolverOptions options = w_field_default_options());
 

@@ -27,20 +27,6 @@ namespace {
 
 using solve_test::expect_bad_input;
 
-MultiPatch two_boxes() {
-  MultiPatch mp;
-  mp.patches = {box_patch({0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {2, 2, 2}),
-                box_patch({1, 0, 0}, {2, 1, 1}, {2, 2, 2}, {2, 2, 2})};
-  mp.materials = {{"steel", 1000.0, 0.3}};
-  find_interfaces(mp);
-  label_boundaries(mp, [](const Eigen::Vector3d& x) {
-    if (std::abs(x(0)) < 1e-9) return std::string("base");
-    if (std::abs(x(0) - 2) < 1e-9) return std::string("end");
-    return std::string("free");
-  });
-  return mp;
-}
-
 iga_check::ElasticityProblem clamped_pulled() {
   iga_check::ElasticityProblem p;
   p.fixed = {{"base", {{true, true, true}}}};
@@ -52,7 +38,7 @@ iga_check::ElasticityProblem clamped_pulled() {
 }  // namespace
 
 TEST(SolveBadInput, SingularConstraintsNameTheFreeMotion) {
-  MultiPatch mp = two_boxes();
+  MultiPatch mp = two_box_bar(2);
   ASSERT_EQ(mp.interfaces.size(), 1u);
   auto problem = clamped_pulled();
   problem.fixed = {{"base", {{true, false, false}}}};  // only u_x = 0 on a plane: y, z, rotation about x free
@@ -69,7 +55,7 @@ TEST(SolveBadInput, SingularConstraintsNameTheFreeMotion) {
 }
 
 TEST(SolveBadInput, UnknownLabelsAndLabelsWithoutSides) {
-  MultiPatch mp = two_boxes();
+  MultiPatch mp = two_box_bar(2);
   auto problem = clamped_pulled();
   problem.fixed.push_back({"nowhere", {{true, true, true}}});
   expect_bad_input([&] { iga_check::solve_elasticity(mp, problem); }, {"unknown label 'nowhere'", "base"});
@@ -83,7 +69,7 @@ TEST(SolveBadInput, UnknownLabelsAndLabelsWithoutSides) {
 }
 
 TEST(SolveBadInput, ErrorsNameTheBoundaryAtFault) {
-  MultiPatch mp = two_boxes();
+  MultiPatch mp = two_box_bar(2);
   auto problem = clamped_pulled();
   problem.fixed = {{"base", {{false, false, false}}}};
   expect_bad_input([&] { iga_check::solve_elasticity(mp, problem); }, {"fixed boundary 'base'", "no displacement component"});
@@ -96,10 +82,10 @@ TEST(SolveBadInput, ErrorsNameTheBoundaryAtFault) {
 }
 
 TEST(SolveBadInput, InvalidMaterials) {
-  MultiPatch mp = two_boxes();
+  MultiPatch mp = two_box_bar(2);
   mp.materials[0].young_modulus = -5.0;
   expect_bad_input([&] { iga_check::solve_elasticity(mp, clamped_pulled()); }, {"steel", "Young's modulus", "-5"});
-  mp = two_boxes();
+  mp = two_box_bar(2);
   mp.materials[0].poisson_ratio = 0.5;
   expect_bad_input([&] { iga_check::solve_elasticity(mp, clamped_pulled()); }, {"Poisson ratio", "0.5"});
   mp.materials[0].poisson_ratio = 0.62;
@@ -109,10 +95,10 @@ TEST(SolveBadInput, InvalidMaterials) {
 TEST(SolveLinearSolvers, ConjugateGradientsAgreeWithCholesky) {
   iga_check::ElasticityOptions options;
   options.refine = 1;
-  const auto chol = iga_check::solve_elasticity(two_boxes(), clamped_pulled(), options);
+  const auto chol = iga_check::solve_elasticity(two_box_bar(2), clamped_pulled(), options);
   options.solver = iga_check::LinearSolver::ConjugateGradient;
   options.cg_tolerance = 1e-12;
-  const auto cg = iga_check::solve_elasticity(two_boxes(), clamped_pulled(), options);
+  const auto cg = iga_check::solve_elasticity(two_box_bar(2), clamped_pulled(), options);
   EXPECT_GT(cg.report.cg_iterations, 0);
   EXPECT_EQ(cg.report.unknowns, chol.report.unknowns);
   EXPECT_NEAR(cg.report.strain_energy, chol.report.strain_energy, 1e-9 * chol.report.strain_energy);
@@ -146,7 +132,7 @@ class SolveCli : public ::testing::Test {
     if (text.find("--pressure") == std::string::npos)
       GTEST_SKIP() << "the igaprep executable has no solve command registered (cli/commands.cpp)";
     model_ = (dir_ / "model.h5").string();
-    exporter::write_hdf5_model(two_boxes(), model_);
+    exporter::write_hdf5_model(two_box_bar(2), model_);
   }
   void TearDown() override {
     if (!dir_.empty()) fs::remove_all(dir_);
@@ -171,7 +157,7 @@ TEST_F(SolveCli, ResultFileCarriesTheSolution) {
   const MultiPatch r = exporter::read_hdf5_model(out);
   iga_check::ElasticityOptions options;
   options.refine = 1;
-  const auto direct = iga_check::solve_elasticity(two_boxes(), clamped_pulled(), options);
+  const auto direct = iga_check::solve_elasticity(two_box_bar(2), clamped_pulled(), options);
   ASSERT_TRUE(r.has_solution);
   ASSERT_EQ(r.patches.size(), 2u);
   EXPECT_NEAR(r.strain_energy, direct.report.strain_energy, 1e-12 * direct.report.strain_energy);
@@ -202,7 +188,7 @@ TEST_F(SolveCli, BadInputExitsOneAndWritesNothing) {
     EXPECT_FALSE(fs::exists(out)) << args;
   }
   // Invalid material in the file.
-  MultiPatch mp = two_boxes();
+  MultiPatch mp = two_box_bar(2);
   mp.materials[0].poisson_ratio = 0.5;
   exporter::write_hdf5_model(mp, model_);
   const std::string out = (dir_ / "bad.h5").string();

@@ -135,4 +135,21 @@ inline void label_boundaries(MultiPatch& mp, const std::function<std::string(con
     }
 }
 
+// Two unit cubes side by side along x, 2 elements per direction, one
+// material (steel-like, E = 1000, nu = 0.3); sides labelled "base" (x = 0),
+// "end" (x = 2) and "free".
+inline MultiPatch two_box_bar(int degree) {
+  MultiPatch mp;
+  mp.patches = {box_patch({0, 0, 0}, {1, 1, 1}, {degree, degree, degree}, {2, 2, 2}),
+                box_patch({1, 0, 0}, {2, 1, 1}, {degree, degree, degree}, {2, 2, 2})};
+  mp.materials = {{"steel", 1000.0, 0.3}};
+  find_interfaces(mp);
+  label_boundaries(mp, [](const Eigen::Vector3d& x) {
+    if (std::abs(x(0)) < 1e-9) return std::string("base");
+    if (std::abs(x(0) - 2) < 1e-9) return std::string("end");
+    return std::string("free");
+  });
+  return mp;
+}
+
 }  // namespace solve_test

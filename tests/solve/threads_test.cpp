@@ -13,27 +13,13 @@ using namespace solve_test;
 
 namespace {
 
-MultiPatch bar(int degree) {
-  MultiPatch mp;
-  mp.patches = {box_patch({0, 0, 0}, {1, 1, 1}, {degree, degree, degree}, {2, 2, 2}),
-                box_patch({1, 0, 0}, {2, 1, 1}, {degree, degree, degree}, {2, 2, 2})};
-  mp.materials = {{"steel", 1000.0, 0.3}};
-  find_interfaces(mp);
-  label_boundaries(mp, [](const Eigen::Vector3d& x) {
-    if (std::abs(x(0)) < 1e-9) return std::string("base");
-    if (std::abs(x(0) - 2) < 1e-9) return std::string("end");
-    return std::string("free");
-  });
-  return mp;
-}
-
 iga_check::ElasticitySolution solve(int k) {
   iga_check::ElasticityProblem problem;
   problem.fixed = {{"base", {{true, true, true}}}};
   problem.pressures = {{"end", 0.5 + k}};
   iga_check::ElasticityOptions options;
   options.extra_quadrature = k % 4;  // different Gauss rules on different threads
-  return iga_check::solve_elasticity(bar(1 + k % 3), problem, options);
+  return iga_check::solve_elasticity(two_box_bar(1 + k % 3), problem, options);
 }
 
 }  // namespace

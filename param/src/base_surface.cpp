@@ -1,19 +1,6 @@
 #include "igaprep/param/base_surface.h"
 
 namespace igaprep::param {
-namespace {
-
-// The smallest (u, v) orientation over M's triangles (twice the signed area).
-double min_uv_orientation(const InsetBase& m) {
-  double lo = 1e300;
-  for (Eigen::Index f = 0; f < m.mesh.F.rows(); ++f) {
-    const Eigen::Vector2d a = m.uv.row(m.mesh.F(f, 0)), b = m.uv.row(m.mesh.F(f, 1)), c = m.uv.row(m.mesh.F(f, 2));
-    lo = std::min(lo, (b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y()));
-  }
-  return lo;
-}
-
-}  // namespace
 
 BaseSurface base_surface(const mesh::TriMesh& m0trim, const Polycube2D& polycube, const BaseSurfaceOptions& options) {
   BaseSurface out;
@@ -26,7 +13,7 @@ BaseSurface base_surface(const mesh::TriMesh& m0trim, const Polycube2D& polycube
   out.m = inset_base_surface(m0trim, out.polycube, options.inset, options.smoothing);
   // The sliding (u, v) is checked on M0trim; cut along it, M can still get a
   // folded triangle next to a corner: then M is cut along the midsurface's.
-  if (out.sliding_used && !(min_uv_orientation(out.m) > 0.0)) {
+  if (out.sliding_used && !(uv_jacobians(out.m.mesh, out.m.uv).minCoeff() > 0.0)) {
     out.sliding.valid = false;
     out.sliding.reason = "M cut along it has a folded triangle";
     out.sliding_used = false;

@@ -14,17 +14,13 @@
 #include <Eigen/Geometry>
 #include <Eigen/Eigenvalues>
 
+#include "igaprep/core/edge_key.h"
 #include "igaprep/core/error.h"
 #include "igaprep/mesh/principal_axes.h"
 #include "igaprep/core/union_find.h"
 
 namespace igaprep::param {
 namespace {
-
-std::uint64_t edge_key(int a, int b) {
-  const std::uint64_t lo = static_cast<std::uint64_t>(std::min(a, b)), hi = static_cast<std::uint64_t>(std::max(a, b));
-  return (lo << 32) | hi;
-}
 
 // Faces of each undirected edge.
 std::unordered_map<std::uint64_t, std::vector<int>> edge_faces(const Eigen::MatrixXi& F) {

@@ -11,6 +11,7 @@
 
 #include <Eigen/Geometry>
 
+#include "igaprep/core/edge_key.h"
 #include "igaprep/core/error.h"
 #include "igaprep/param/gradient.h"
 #include "igaprep/param/harmonic_field.h"
@@ -20,11 +21,6 @@
 #include "igaprep/param/trace_gradient.h"
 
 namespace igaprep::param {
-namespace {
-
-std::uint64_t key2(int a, int b) { return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b); }
-
-}  // namespace
 
 int split_loop_chords(mesh::TetMesh& tets, const CutLoops& cut) {
   const Eigen::Index n1 = cut.surface.V.rows();
@@ -34,7 +30,7 @@ int split_loop_chords(mesh::TetMesh& tets, const CutLoops& cut) {
     for (std::size_t i = 0; i < loop.size(); ++i) {
       on_loop[static_cast<std::size_t>(loop[i])] = 1;
       const int a = loop[i], b = loop[(i + 1) % loop.size()];
-      loop_edges.insert(key2(std::min(a, b), std::max(a, b)));
+      loop_edges.insert(edge_key(a, b));
     }
   static const int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
   int total = 0;
@@ -46,7 +42,7 @@ int split_loop_chords(mesh::TetMesh& tets, const CutLoops& cut) {
       for (const auto& e : kEdges) {
         const int a = tets.T(c, e[0]), b = tets.T(c, e[1]);
         if (a >= n1 || b >= n1 || !on_loop[a] || !on_loop[b]) continue;
-        const std::uint64_t k = key2(std::min(a, b), std::max(a, b));
+        const std::uint64_t k = edge_key(a, b);
         if (!loop_edges.count(k)) edge_tets[k].push_back(static_cast<int>(c));
       }
     if (edge_tets.empty()) return total;
@@ -135,7 +131,7 @@ Midsurface zero_sheet(const mesh::TetMesh& tets, const Eigen::VectorXd& f, Eigen
   std::vector<double> ts;
   auto vertex = [&](int a, int b) {  // a == b: the tet vertex itself (at 0)
     if (a > b) std::swap(a, b);
-    const std::uint64_t k = key2(a, b);
+    const std::uint64_t k = edge_key(a, b);
     auto it = vid.find(k);
     if (it != vid.end()) return it->second;
     const double t = a == b ? 0.0 : g(a) / (g(a) - g(b));

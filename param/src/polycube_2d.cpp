@@ -11,16 +11,13 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseLU>
 
+#include "igaprep/core/edge_key.h"
 #include "igaprep/core/error.h"
 #include "igaprep/param/harmonic_field.h"
 #include "igaprep/param/stiffness_matrix.h"
 
 namespace igaprep::param {
 namespace {
-
-std::uint64_t ekey(int a, int b) {
-  return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint64_t>(std::max(a, b));
-}
 
 Eigen::Vector3d P(const mesh::TriMesh& m, int i) { return m.V.row(i).transpose(); }
 
@@ -173,7 +170,7 @@ int split_boundary_ears(mesh::TriMesh& m) {
   for (int pass = 0; pass < 32; ++pass) {
     std::unordered_map<std::uint64_t, std::vector<int>> ef;
     for (int f = 0; f < m.F.rows(); ++f)
-      for (int k = 0; k < 3; ++k) ef[ekey(m.F(f, k), m.F(f, (k + 1) % 3))].push_back(f);
+      for (int k = 0; k < 3; ++k) ef[edge_key(m.F(f, k), m.F(f, (k + 1) % 3))].push_back(f);
     std::vector<char> touched(static_cast<std::size_t>(m.F.rows()), 0);
     std::map<std::uint64_t, int> mid;
     std::vector<Eigen::RowVector3d> newV;
@@ -198,7 +195,7 @@ int split_boundary_ears(mesh::TriMesh& m) {
       bool split = false;
       for (int k = 0; k < 3 && !split; ++k) {
         const int a = m.F(f, k), b = m.F(f, (k + 1) % 3), c = m.F(f, (k + 2) % 3);
-        auto it = mid.find(ekey(a, b));
+        auto it = mid.find(edge_key(a, b));
         if (it == mid.end()) continue;
         faces.push_back({a, it->second, c});
         faces.push_back({it->second, b, c});
@@ -320,7 +317,7 @@ int refine_hole_corners(mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops
   for (int pass = 0; pass < 8; ++pass) {
     std::unordered_map<std::uint64_t, std::vector<int>> ef;
     for (int f = 0; f < m.F.rows(); ++f)
-      for (int k = 0; k < 3; ++k) ef[ekey(m.F(f, k), m.F(f, (k + 1) % 3))].push_back(f);
+      for (int k = 0; k < 3; ++k) ef[edge_key(m.F(f, k), m.F(f, (k + 1) % 3))].push_back(f);
     std::map<std::uint64_t, int> mid;
     std::vector<Eigen::RowVector3d> newV;
     for (const PolycubeLoop& L : loops) {
@@ -333,7 +330,7 @@ int refine_hole_corners(mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops
           for (int j = 0; j < 3; ++j)
             if (m.F(f, j) == c) {
               ++fan;
-              opposite.push_back(ekey(m.F(f, (j + 1) % 3), m.F(f, (j + 2) % 3)));
+              opposite.push_back(edge_key(m.F(f, (j + 1) % 3), m.F(f, (j + 2) % 3)));
             }
         if (fan >= min_fan) continue;
         for (std::uint64_t e : opposite)
@@ -351,7 +348,7 @@ int refine_hole_corners(mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops
       std::array<int, 3> v{m.F(f, 0), m.F(f, 1), m.F(f, 2)}, e{};
       int count = 0;
       for (int j = 0; j < 3; ++j) {
-        auto it = mid.find(ekey(v[j], v[(j + 1) % 3]));
+        auto it = mid.find(edge_key(v[j], v[(j + 1) % 3]));
         e[j] = it == mid.end() ? -1 : it->second;
         count += e[j] >= 0;
       }

@@ -10,6 +10,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "igaprep/core/edge_key.h"
 #include "igaprep/core/error.h"
 #include "igaprep/core/union_find.h"
 #include "igaprep/mesh/principal_axes.h"
@@ -76,8 +77,7 @@ std::vector<FaceEdge> face_neighbours(const mesh::TriMesh& m) {
   for (int f = 0; f < static_cast<int>(m.F.rows()); ++f)
     for (int k = 0; k < 3; ++k) {
       const int u = m.F(f, k), v = m.F(f, (k + 1) % 3);
-      const std::uint64_t key = (std::uint64_t(std::min(u, v)) << 32) | std::uint32_t(std::max(u, v));
-      const auto [it, inserted] = first.emplace(key, f);
+      const auto [it, inserted] = first.emplace(edge_key(u, v), f);
       if (!inserted) edges.push_back({it->second, f, (m.V.row(u) - m.V.row(v)).norm()});
     }
   return edges;

@@ -1,5 +1,7 @@
 #include "igaprep/param/midsurface_pipeline.h"
 
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -49,38 +51,107 @@ void complete_midsurface(const std::vector<mesh::TriMesh>& surfaces, const Midsu
   }
 }
 
-// The midsurface on an automatic cut; false (and why, in r.tried) when a
+// The midsurface on an automatic cut; false (and why, in `tried`) when a
 // stage refuses it, so that the next candidate can be tried.
 bool try_automatic_cut(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOptions& o, CutLoops cut,
-                       MidsurfaceResult& r) {
+                       MidsurfaceResult& r, std::vector<std::string>& tried) {
   r.cut = std::move(cut);
   try {
     complete_midsurface(surfaces, o, r);
     return true;
   } catch (const Error& e) {
     if (e.kind() == ErrorKind::Internal) throw;
-    r.tried.push_back(r.cut.source + ": " + e.what());
+    tried.push_back(r.cut.source + ": " + e.what());
     return false;
   }
 }
 
-// The cut between the two sides of a thin solid (thin_sides.h); false (and
-// why, in r.tried) when it is refused.
-bool try_thin_sides_cut(const std::vector<mesh::TriMesh>& surfaces, const ThinSides& sides,
-                        const MidsurfaceOptions& o, const std::string& name, MidsurfaceResult& r) {
+// The quality of a valid cut (section 4.1): the root mean square of the
+// path lengths from T1 to M0, so that long paths and a wide spread both
+// count (the shell's streamlines fan out along long paths), over the share
+// of paths that reached M0.
+double cut_score(const PathLengthStats& p) {
+  if (p.reached == 0) return std::numeric_limits<double>::infinity();
+  return std::sqrt(p.mean * p.mean + p.variance) * p.traced / p.reached;
+}
+
+// A later candidate replaces the best one only when its score is lower by
+// this factor: near-ties (the principal planes of a sphere) keep the
+// earlier, simpler cut.
+constexpr double kClearlyBetter = 0.9;
+
+// The valid automatic cuts, scored; the best one is kept.
+class CandidateCuts {
+ public:
+  CandidateCuts(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOptions& o) : surfaces_(surfaces), o_(o) {}
+
+  // Builds the midsurface on the cut; records why it was refused or its score.
+  void consider(CutLoops cut) {
+    MidsurfaceResult c;
+    if (!try_automatic_cut(surfaces_, o_, std::move(cut), c, tried_)) return;
+    const double score = cut_score(c.paths);
+    std::ostringstream line;
+    line.precision(4);
+    line << c.cut.source << ": valid, path lengths to M0 mean " << c.paths.mean << ", spread "
+         << std::sqrt(c.paths.variance) << " (" << c.paths.reached << " of " << c.paths.traced
+         << " reached): score " << score;
+    valid_.push_back(line.str());
+    if (!best_ || score < kClearlyBetter * best_score_) best_ = std::move(c), best_score_ = score;
+  }
+  bool found() const { return best_.has_value(); }
+  // Without the quality paths there is no score: the first valid cut is taken.
+  bool done() const { return found() && !o_.path_lengths; }
+  std::vector<std::string>& tried() { return tried_; }
+
+  MidsurfaceResult take() {
+    MidsurfaceResult r = std::move(*best_);
+    r.tried = std::move(tried_);
+    r.valid = std::move(valid_);
+    return r;
+  }
+
+ private:
+  const std::vector<mesh::TriMesh>& surfaces_;
+  const MidsurfaceOptions& o_;
+  std::optional<MidsurfaceResult> best_;
+  double best_score_ = 0.0;
+  std::vector<std::string> tried_, valid_;
+};
+
+// The cut between the two sides of a thin solid (thin_sides.h).
+void consider_thin_sides(const mesh::TriMesh& T1, const ThinSides& sides, const std::string& name,
+                         CandidateCuts& candidates) {
   std::ostringstream src;
   src.precision(3);
   src << "thin sides (" << sides.plate_pairs << " plate pairs, median thickness " << sides.median_thickness << ")";
-  CutLoops cut;
   try {
-    cut = cut_by_field(surfaces[0], sides.vertex_value, name, src.str());
+    CutLoops cut = cut_by_field(T1, sides.vertex_value, name, src.str());
+    cut.source = "automatic: " + cut.source;
+    candidates.consider(std::move(cut));
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::BadInput) throw;
-    r.tried.push_back(std::string("thin sides: ") + e.what());
-    return false;
+    candidates.tried().push_back(std::string("thin sides: ") + e.what());
   }
-  cut.source = "automatic: " + cut.source;
-  return try_automatic_cut(surfaces, o, std::move(cut), r);
+}
+
+// A principal plane; one that runs through a face of T1 (within the
+// snapping tolerance) or along it is moved along its normal by a thousandth
+// of T1's diagonal, once each way, before it is given up.
+void consider_plane(const mesh::TriMesh& T1, const CutPlane& p, const std::string& name, CandidateCuts& candidates) {
+  const double nudge = 1e-3 * (T1.V.colwise().maxCoeff() - T1.V.colwise().minCoeff()).norm();
+  std::string first_refusal;
+  for (const double shift : {0.0, nudge, -nudge}) {
+    try {
+      CutLoops cut = cut_by_plane(T1, {p.point + shift * p.normal, p.normal}, name);
+      cut.source = "automatic: " + cut.source;
+      candidates.consider(std::move(cut));
+      return;
+    } catch (const Error& e) {
+      if (e.kind() != ErrorKind::BadInput) throw;
+      if (first_refusal.empty()) first_refusal = e.what();
+    }
+  }
+  candidates.tried().push_back(first_refusal);
 }
 
 // T1's extent along a direction.
@@ -94,42 +165,43 @@ double extent_along(const mesh::TriMesh& T1, const Eigen::Vector3d& d) {
 // a propeller (1.5 of 9.7), a pelvis; not an ellipsoid or a ring.
 constexpr double kThinRatio = 0.5;
 
-// For a thin solid the two sides first, then principal planes (a plane
-// across a thin blade makes M0 a narrow ribbon along it); for others the
-// principal planes first. Then the plane family's shortest valid cuts.
-void automatic_midsurface(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOptions& o,
-                          const std::string& name, MidsurfaceResult& r) {
+// The candidates, scored by cut_score: for a thin solid its two sides and
+// the principal planes; for others the principal planes, and the two sides
+// only when no plane gives a valid midsurface. When none does, the plane
+// family's shortest valid cuts (at most kFamilyTried).
+MidsurfaceResult automatic_midsurface(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOptions& o,
+                                      const std::string& name) {
   const mesh::TriMesh& T1 = surfaces[0];
+  CandidateCuts candidates(surfaces, o);
   std::optional<ThinSides> sides;
   try {
     sides = thin_sides(T1);
   } catch (const Error& e) {
     if (e.kind() != ErrorKind::BadInput) throw;
-    r.tried.push_back(std::string("thin sides: ") + e.what());
+    candidates.tried().push_back(std::string("thin sides: ") + e.what());
   }
   const bool thin = sides && sides->median_thickness < kThinRatio * extent_along(T1, sides->up);
-  if (thin && try_thin_sides_cut(surfaces, *sides, o, name, r)) return;
-  for (const CutPlane& p : automatic_cut_planes(T1)) {
-    CutLoops cut;
-    try {
-      cut = cut_by_plane(T1, p, name);
-    } catch (const Error& e) {
-      if (e.kind() != ErrorKind::BadInput) throw;
-      r.tried.push_back(e.what());
-      continue;
-    }
-    cut.source = "automatic: " + cut.source;
-    if (try_automatic_cut(surfaces, o, std::move(cut), r)) return;
+  if (thin) consider_thin_sides(T1, *sides, name, candidates);
+  // The three principal planes; the two offset ones (the last, see
+  // automatic_cut_planes) only when none of them gives a valid midsurface.
+  const std::vector<CutPlane> planes = automatic_cut_planes(T1);
+  for (std::size_t i = 0; i < planes.size() && !candidates.done(); ++i) {
+    if (i >= 3 && candidates.found()) break;
+    consider_plane(T1, planes[i], name, candidates);
   }
-  if (sides && !thin && try_thin_sides_cut(surfaces, *sides, o, name, r)) return;
-  const PlaneFamily family = cut_plane_family(T1, kFamilyNormals, kFamilyOffsets, name);
-  r.tried.push_back("plane family: " + std::to_string(family.valid.size()) + " of " + std::to_string(family.tried) +
+  if (sides && !thin && !candidates.found()) consider_thin_sides(T1, *sides, name, candidates);
+  if (!candidates.found()) {
+    const PlaneFamily family = cut_plane_family(T1, kFamilyNormals, kFamilyOffsets, name);
+    auto& tried = candidates.tried();
+    tried.push_back("plane family: " + std::to_string(family.valid.size()) + " of " + std::to_string(family.tried) +
                     " planes give valid loops; the others:");
-  for (const auto& line : family.refusals) r.tried.push_back("  " + line);
-  for (std::size_t i = 0; i < family.valid.size() && i < kFamilyTried; ++i)
-    if (try_automatic_cut(surfaces, o, family.valid[i], r)) return;
+    for (const auto& line : family.refusals) tried.push_back("  " + line);
+    for (std::size_t i = 0; i < family.valid.size() && i < kFamilyTried && !candidates.done(); ++i)
+      candidates.consider(family.valid[i]);
+  }
+  if (candidates.found()) return candidates.take();
   std::string all;
-  for (const auto& t : r.tried) all += "\n  " + t;
+  for (const auto& t : candidates.tried()) all += "\n  " + t;
   throw bad_input(name + ": no automatic cut gives a valid midsurface:" + all +
                   "\ngive a plane or loops drawn as waypoints in the case file's \"midsurface\" section");
 }
@@ -142,7 +214,7 @@ MidsurfaceResult build_midsurface(const std::vector<mesh::TriMesh>& surfaces, co
   MidsurfaceResult r;
   const mesh::TriMesh& T1 = surfaces[0];
   if (o.cut == MidsurfaceOptions::CutKind::Automatic) {
-    automatic_midsurface(surfaces, o, name, r);
+    r = automatic_midsurface(surfaces, o, name);
   } else {
     switch (o.cut) {
       case MidsurfaceOptions::CutKind::Plane: r.cut = cut_by_plane(T1, o.plane, name); break;

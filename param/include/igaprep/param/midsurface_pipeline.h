@@ -40,6 +40,7 @@ struct MidsurfaceResult {
   TrimmedSheet m0trim;       // after split_boundary_ears (m0_vertex = -1 for the vertices that added)
   Polycube2D polycube;
   std::vector<std::string> tried;  // automatic cut: why each rejected candidate failed
+  std::vector<std::string> valid;  // automatic cut: the valid candidates with their scores (the best one is kept)
 };
 
 // Inputs: surfaces T1..Tn (validated, nested, outward), options, name of T1 for

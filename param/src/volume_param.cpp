@@ -17,6 +17,7 @@
 #include "igaprep/param/streamline_column.h"
 #include "igaprep/param/surface_projector.h"
 #include "igaprep/param/tet_topology.h"
+#include "shell_columns.h"
 
 namespace igaprep::param {
 
@@ -446,39 +447,45 @@ bool traced(const ShellBase& face, int m, int q) {
   return !face.ruled || j == 0 || j == m - 1 || j == face.ruled_mid;
 }
 
-// The streamline of -grad w from every traced sample of the face.
-std::vector<StreamlineColumn> trace_face_columns(VolumeContext& ctx, const ShellBase& face, int& streamlines) {
-  const int m = ctx.m;
-  std::vector<StreamlineColumn> cols(static_cast<std::size_t>(m * m));
-  for (int q = 0; q < m * m; ++q)
-    if (traced(face, m, q)) {
-      cols[static_cast<std::size_t>(q)] =
-          trace_column(ctx.probe, face.start[static_cast<std::size_t>(q)], ctx.options.stream_step * ctx.diag, &ctx.hint);
-      ++streamlines;
-    }
-  return cols;
+// Depth in the shell (0 on the core face, 1 on T1) of sample k of a layer's
+// block (layer 1 outermost): the same number for the samples two layers share.
+double shell_depth(const VolumeContext& ctx, int layer, int k) {
+  return 1.0 - (static_cast<double>(layer - 1) + ctx.params[static_cast<std::size_t>(k)]) / ctx.n;
 }
 
-// The samples of a face's shell block in layer (1..n): the traced columns cut
-// at the layer's w-levels, w in [(layer - 1)/n, layer/n] (the innermost one
-// up to the face itself); the untraced rows of a ruled face are left for rule_rows.
-Eigen::MatrixXd layer_samples(const VolumeContext& ctx, const ShellBase& face,
-                              const std::vector<StreamlineColumn>& cols, int layer) {
+// The streamlines of -grad w from the face's traced samples; with strategy 2
+// spread where they fan out (shell_columns.h).
+ShellColumns face_columns(VolumeContext& ctx, const ShellBase& face) {
+  std::vector<double> depths;
+  for (int layer = 1; layer <= ctx.n; ++layer)
+    for (int k = 0; k < ctx.m; ++k) depths.push_back(shell_depth(ctx, layer, k));
+  std::sort(depths.begin(), depths.end());
+  depths.erase(std::unique(depths.begin(), depths.end()), depths.end());
+  const int m = ctx.m;
+  return ShellColumns(ctx.probe, ctx.options.stream_step * ctx.diag, &ctx.hint, ctx.params, face.start,
+                      [&](int q) { return traced(face, m, q); }, face.ruled, !ctx.strategy1 && !face.collapsed,
+                      depths);
+}
+
+// The samples of a face's shell block in layer (1..n): the columns cut at
+// the layer's w-levels, w in [(layer - 1)/n, layer/n] (the innermost one up
+// to the face itself); the untraced rows of a ruled face are left for rule_rows.
+Eigen::MatrixXd layer_samples(const VolumeContext& ctx, const ShellBase& face, const ShellColumns& cols, int layer) {
   const int m = ctx.m, n = ctx.n;
   const double lo = static_cast<double>(layer - 1) / n;
   Eigen::MatrixXd s(m * m * m, 3);
   for (int q = 0; q < m * m; ++q) {
     if (!traced(face, m, q)) continue;
-    const StreamlineColumn& col = cols[static_cast<std::size_t>(q)];
-    // Arc lengths of the layer's outer (w = lo) and inner ends; the inner
-    // end of the innermost layer is the core face itself (arc 0).
-    const double s_lo = col.arc_at_level(lo);
-    const double s_hi = layer == n ? 0.0 : col.arc_at_level(static_cast<double>(layer) / n);
     for (int k = 0; k < m; ++k) {
+      const StreamlineColumn& col = cols.at(q, shell_depth(ctx, layer, k));
+      // Arc lengths of the layer's outer (w = lo) and inner ends; the inner
+      // end of the innermost layer is the core face itself (arc 0).
+      const double s_lo = col.arc_at_level(lo);
+      const double s_hi = layer == n ? 0.0 : col.arc_at_level(static_cast<double>(layer) / n);
       Eigen::Vector3d x;
       if (k == 0) x = col.at_arc(s_lo);
       else if (k == m - 1) x = layer == n ? face.face[static_cast<std::size_t>(q)] : col.at_arc(s_hi);
-      else x = col.at_arc(s_lo + ctx.params[k] * (s_hi - s_lo));
+      else x = col.at_arc(s_lo + ctx.params[static_cast<std::size_t>(k)] * (s_hi - s_lo));
       s.row(q + m * m * k) = x.transpose();
     }
   }
@@ -494,7 +501,9 @@ void add_shell_blocks(VolumeContext& ctx, const DecompositionMesh& H, const std:
   Progress progress("streamlines", faces.size(), ctx.options.progress);
   for (std::size_t f = 0; f < faces.size(); ++f) {
     const ShellBase& face = faces[f];
-    const std::vector<StreamlineColumn> cols = trace_face_columns(ctx, face, out.streamlines);
+    const ShellColumns cols = face_columns(ctx, face);
+    out.streamlines += cols.streamlines();
+    if (cols.spread()) ++out.spread_faces;
     for (int layer = 1; layer <= n; ++layer) {
       Eigen::MatrixXd s = layer_samples(ctx, face, cols, layer);
       if (face.ruled) {

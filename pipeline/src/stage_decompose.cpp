@@ -93,10 +93,10 @@ param::VolumeParam param_stage(const Case& c, const Decomposition& d, Observer& 
   options.progress = progress_to(observer);
   param::VolumeParam vp = param::build_volume_param(d.H, d.w, d.layout, spline::block_sample_params(c.fit), options);
   StageSummary s{"param", timer.seconds(),
-                 text("strategy %d, w0 = %.3f: %zu blocks (%d core faces x %d layers + core), %d streamlines, %d "
-                      "folded sample cells",
+                 text("strategy %d, w0 = %.3f: %zu blocks (%d core faces x %d layers + core), %d streamlines "
+                      "(%d faces spread), %d folded sample cells",
                       c.volume.strategy, vp.w0, vp.blocks.size(), vp.core_faces, vp.layers, vp.streamlines,
-                      vp.folded_cells),
+                      vp.spread_faces, vp.folded_cells),
                  {}};
   if (vp.folded_cells > 0) {
     std::string line = "folded sample cells:";

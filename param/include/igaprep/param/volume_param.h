@@ -81,6 +81,7 @@ struct VolumeParam {
   double w0 = 0.0;
   int rectangles = 0, crests = 0, core_faces = 0, layers = 0;
   int streamlines = 0;     // traced from the core's outer faces to T1
+  int spread_faces = 0;    // core faces whose streamlines fanned out and were spread evenly on T1 (shell_spread.h)
   int folded_cells = 0;    // sample-grid cells with a non-positive corner volume (should be 0)
 };
 

@@ -1,0 +1,47 @@
+#pragma once
+// Evenly spread shell columns. Where a thick part of the solid is reached
+// from a narrow core face (the propeller's hub, crossed by M at mid-height),
+// w falls off exponentially away from M and the streamlines of -grad w fan
+// out: a region of T1 many samples wide is reached from between two
+// neighbouring samples of the face, and the shell block's face on T1 is a
+// chord across it. Here the face's sample parameters are moved so that the
+// streamlines' ends on T1 are evenly spaced (docs/decomposition.md).
+#include <functional>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace igaprep::param {
+
+struct SpreadOptions {
+  // A row of ends is spread only when its largest gap is more than this
+  // many times its mean gap (the built-in models' rows: at most 2.3; the
+  // propeller's hub: up to 8).
+  double uneven_ratio = 3.0;
+  int refinements = 12;  // halvings of a parameter interval, at most
+  int per_gap = 4;       // the curve of ends is refined to this many chords per even gap
+};
+
+// Inputs: the curve s -> end(s) for s in [0, 1], its ends at the ascending
+// params (0 first, 1 last). Output: parameters from 0 to 1 at which the ends
+// are evenly spaced by chord length along the curve (refined adaptively
+// between the given ends), or params itself when the given ends are not
+// uneven (SpreadOptions::uneven_ratio). Deterministic: the same curve and
+// ends give the same parameters, so neighbouring faces that share an edge
+// agree on it.
+std::vector<double> even_end_params(const std::function<Eigen::Vector3d(double)>& end,
+                                    const std::vector<double>& params, const std::vector<Eigen::Vector3d>& ends,
+                                    const SpreadOptions& options = {});
+
+// The same over a face: m x m sample points (s, t) of the unit square, first
+// index fastest, from the grid params x params. Every row (t = params[j])
+// is spread along s, then every column through the rows' new points (a
+// polyline in (s, t)) along its length. On the square's edges a result
+// depends only on the ends along that edge. end(p): the end of the
+// streamline from the face at p; ends: at the grid points.
+std::vector<Eigen::Vector2d> spread_face_params(const std::function<Eigen::Vector3d(const Eigen::Vector2d&)>& end,
+                                                const std::vector<double>& params,
+                                                const std::vector<Eigen::Vector3d>& ends,
+                                                const SpreadOptions& options = {});
+
+}  // namespace igaprep::param

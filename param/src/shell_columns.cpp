@@ -1,0 +1,95 @@
+#include "shell_columns.h"
+
+#include <algorithm>
+#include <cstddef>
+
+#include "igaprep/core/error.h"
+#include "igaprep/param/shell_spread.h"
+
+namespace igaprep::param {
+namespace {
+
+// The face at parameter p, bilinear in the grid cell that holds it (exact
+// at grid points, and on an edge a function of that edge's points only).
+Eigen::Vector3d face_point(const std::vector<Eigen::Vector3d>& face, const std::vector<double>& params,
+                           const Eigen::Vector2d& p) {
+  const std::size_t m = params.size();
+  auto cell = [&](double x) {
+    const auto it = std::upper_bound(params.begin(), params.end(), x);
+    return std::clamp<std::size_t>(static_cast<std::size_t>(it - params.begin()), 1, m - 1) - 1;
+  };
+  const std::size_t i = cell(p.x()), j = cell(p.y());
+  const double a = (p.x() - params[i]) / (params[i + 1] - params[i]);
+  const double b = (p.y() - params[j]) / (params[j + 1] - params[j]);
+  const Eigen::Vector3d lo = (1.0 - a) * face[i + m * j] + a * face[i + 1 + m * j];
+  const Eigen::Vector3d hi = (1.0 - a) * face[i + m * (j + 1)] + a * face[i + 1 + m * (j + 1)];
+  return (1.0 - b) * lo + b * hi;
+}
+
+Eigen::Vector3d last_point(const StreamlineColumn& c) { return c.path.row(c.path.rows() - 1).transpose(); }
+
+double smoothstep(double h) { return h * h * (3.0 - 2.0 * h); }
+
+}  // namespace
+
+ShellColumns::ShellColumns(const FieldProbe& probe, double step, int* hint, const std::vector<double>& params,
+                           const std::vector<Eigen::Vector3d>& face, const std::function<bool(int)>& traced,
+                           bool ruled, bool spread, const std::vector<double>& depths)
+    : probe_(probe), step_(step), hint_(hint), params_(params), face_(face), depths_(depths) {
+  const int m = static_cast<int>(params.size());
+  grid_.resize(face.size());
+  for (int q = 0; q < m * m; ++q)
+    if (traced(q)) grid_[static_cast<std::size_t>(q)] = trace_from({params[static_cast<std::size_t>(q % m)],
+                                                                     params[static_cast<std::size_t>(q / m)]});
+  if (!spread) return;
+  auto end = [&](const Eigen::Vector2d& p) { return last_point(trace_from(p)); };
+  std::vector<Eigen::Vector2d> moved(face.size());
+  for (int q = 0; q < m * m; ++q)
+    moved[static_cast<std::size_t>(q)] = {params[static_cast<std::size_t>(q % m)], params[static_cast<std::size_t>(q / m)]};
+  const std::vector<Eigen::Vector2d> grid = moved;
+  if (!ruled) {
+    std::vector<Eigen::Vector3d> ends(face.size());
+    for (std::size_t q = 0; q < face.size(); ++q) ends[q] = last_point(grid_[q]);
+    moved = spread_face_params(end, params, ends);
+  } else {
+    for (const int j : {0, m - 1}) {
+      const double t = params[static_cast<std::size_t>(j)];
+      std::vector<Eigen::Vector3d> ends(static_cast<std::size_t>(m));
+      for (int i = 0; i < m; ++i) ends[static_cast<std::size_t>(i)] = last_point(grid_[static_cast<std::size_t>(i + m * j)]);
+      const std::vector<double> s = even_end_params([&](double x) { return end({x, t}); }, params, ends);
+      for (int i = 0; i < m; ++i) moved[static_cast<std::size_t>(i + m * j)].x() = s[static_cast<std::size_t>(i)];
+    }
+  }
+  if (moved == grid) return;
+  moved_ = std::move(moved);
+  trace_spread_columns(traced);
+}
+
+StreamlineColumn ShellColumns::trace_from(const Eigen::Vector2d& p) {
+  ++streamlines_;
+  return trace_column(probe_, face_point(face_, params_, p), step_, hint_);
+}
+
+void ShellColumns::trace_spread_columns(const std::function<bool(int)>& traced) {
+  const int m = static_cast<int>(params_.size());
+  depth_.resize(face_.size());
+  for (int q = 0; q < m * m; ++q) {
+    const Eigen::Vector2d p(params_[static_cast<std::size_t>(q % m)], params_[static_cast<std::size_t>(q / m)]);
+    const Eigen::Vector2d d = moved_[static_cast<std::size_t>(q)] - p;
+    if (!traced(q) || d.isZero(0.0)) continue;
+    auto& cols = depth_[static_cast<std::size_t>(q)];
+    cols.resize(depths_.size());
+    for (std::size_t k = 0; k < depths_.size(); ++k)
+      if (depths_[k] > 0.0) cols[k] = trace_from(p + smoothstep(depths_[k]) * d);
+  }
+}
+
+const StreamlineColumn& ShellColumns::at(int q, double h) const {
+  if (depth_.empty() || depth_[static_cast<std::size_t>(q)].empty() || h == 0.0) return grid_[static_cast<std::size_t>(q)];
+  const auto& cols = depth_[static_cast<std::size_t>(q)];
+  const auto it = std::lower_bound(depths_.begin(), depths_.end(), h);
+  if (it == depths_.end() || *it != h) throw internal_error("shell columns: a depth that was not traced");
+  return cols[static_cast<std::size_t>(it - depths_.begin())];
+}
+
+}  // namespace igaprep::param

@@ -1,0 +1,123 @@
+#include "igaprep/param/shell_spread.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <iterator>
+#include <list>
+#include <utility>
+
+#include "igaprep/core/error.h"
+
+namespace igaprep::param {
+namespace {
+
+struct CurvePoint {
+  double s;
+  Eigen::Vector3d end;
+};
+
+double chord_length(const std::vector<Eigen::Vector3d>& ends) {
+  double total = 0.0;
+  for (std::size_t i = 1; i < ends.size(); ++i) total += (ends[i] - ends[i - 1]).norm();
+  return total;
+}
+
+bool uneven(const std::vector<Eigen::Vector3d>& ends, double ratio) {
+  double largest = 0.0;
+  for (std::size_t i = 1; i < ends.size(); ++i) largest = std::max(largest, (ends[i] - ends[i - 1]).norm());
+  const double mean = chord_length(ends) / static_cast<double>(ends.size() - 1);
+  return largest > ratio * mean;
+}
+
+// Halves every interval whose chord is longer than `target`, depth first.
+void refine(const std::function<Eigen::Vector3d(double)>& end, std::list<CurvePoint>& curve,
+            std::list<CurvePoint>::iterator a, double target, int depth) {
+  const auto b = std::next(a);
+  if (depth == 0 || (b->end - a->end).norm() <= target) return;
+  const double mid = 0.5 * (a->s + b->s);
+  const auto m = curve.insert(b, {mid, end(mid)});
+  refine(end, curve, a, target, depth - 1);
+  refine(end, curve, m, target, depth - 1);
+}
+
+// The parameters at k / (count - 1) of the curve's chord length.
+std::vector<double> even_by_chord(const std::list<CurvePoint>& curve, std::size_t count) {
+  std::vector<double> s, c;
+  double run = 0.0;
+  const CurvePoint* prev = nullptr;
+  for (const CurvePoint& p : curve) {
+    if (prev) run += (p.end - prev->end).norm();
+    s.push_back(p.s);
+    c.push_back(run);
+    prev = &p;
+  }
+  std::vector<double> out(count);
+  out.front() = 0.0;
+  out.back() = 1.0;
+  for (std::size_t k = 1; k + 1 < count; ++k) {
+    const double target = run * static_cast<double>(k) / static_cast<double>(count - 1);
+    const std::size_t hi = static_cast<std::size_t>(std::lower_bound(c.begin(), c.end(), target) - c.begin());
+    const std::size_t lo = hi - 1;
+    const double t = c[hi] > c[lo] ? (target - c[lo]) / (c[hi] - c[lo]) : 0.0;
+    out[k] = (1.0 - t) * s[lo] + t * s[hi];
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<double> even_end_params(const std::function<Eigen::Vector3d(double)>& end,
+                                    const std::vector<double>& params, const std::vector<Eigen::Vector3d>& ends,
+                                    const SpreadOptions& options) {
+  if (params.size() < 3 || params.size() != ends.size() || params.front() != 0.0 || params.back() != 1.0)
+    throw internal_error("even_end_params: need at least 3 parameters from 0 to 1, one end each");
+  if (!uneven(ends, options.uneven_ratio)) return params;
+  std::list<CurvePoint> curve;
+  for (std::size_t i = 0; i < params.size(); ++i) curve.push_back({params[i], ends[i]});
+  const double target = chord_length(ends) / static_cast<double>((params.size() - 1) * options.per_gap);
+  for (auto a = curve.begin(); std::next(a) != curve.end();) {
+    const auto b = std::next(a);
+    refine(end, curve, a, target, options.refinements);
+    a = b;
+  }
+  return even_by_chord(curve, params.size());
+}
+
+std::vector<Eigen::Vector2d> spread_face_params(const std::function<Eigen::Vector3d(const Eigen::Vector2d&)>& end,
+                                                const std::vector<double>& params,
+                                                const std::vector<Eigen::Vector3d>& ends,
+                                                const SpreadOptions& options) {
+  const std::size_t m = params.size();
+  if (ends.size() != m * m) throw internal_error("spread_face_params: need one end per grid point");
+  std::vector<Eigen::Vector2d> rows(m * m);
+  std::vector<Eigen::Vector3d> row_ends(m * m);
+  for (std::size_t j = 0; j < m; ++j) {
+    const double t = params[j];
+    std::vector<Eigen::Vector3d> e(ends.begin() + static_cast<std::ptrdiff_t>(m * j),
+                                   ends.begin() + static_cast<std::ptrdiff_t>(m * (j + 1)));
+    const std::vector<double> s =
+        even_end_params([&](double x) { return end(Eigen::Vector2d(x, t)); }, params, e, options);
+    for (std::size_t i = 0; i < m; ++i) {
+      rows[i + m * j] = Eigen::Vector2d(s[i], t);
+      row_ends[i + m * j] = s[i] == params[i] ? e[i] : end(rows[i + m * j]);
+    }
+  }
+  std::vector<Eigen::Vector2d> out(m * m);
+  for (std::size_t i = 0; i < m; ++i) {
+    // The column is the polyline through the rows' points, at u = params[j].
+    auto at = [&](double u) {
+      const std::size_t hi = std::min<std::size_t>(
+          m - 1, std::max<std::size_t>(1, static_cast<std::size_t>(std::upper_bound(params.begin(), params.end(), u) -
+                                                                    params.begin())));
+      const double w = (u - params[hi - 1]) / (params[hi] - params[hi - 1]);
+      return Eigen::Vector2d((1.0 - w) * rows[i + m * (hi - 1)] + w * rows[i + m * hi]);
+    };
+    std::vector<Eigen::Vector3d> e(m);
+    for (std::size_t j = 0; j < m; ++j) e[j] = row_ends[i + m * j];
+    const std::vector<double> u = even_end_params([&](double x) { return end(at(x)); }, params, e, options);
+    for (std::size_t j = 0; j < m; ++j) out[i + m * j] = u == params ? rows[i + m * j] : at(u[j]);
+  }
+  return out;
+}
+
+}  // namespace igaprep::param

@@ -1,0 +1,67 @@
+// Spreading a shell face's streamline ends evenly (param/shell_spread.h).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "igaprep/param/shell_spread.h"
+
+namespace {
+
+using igaprep::param::even_end_params;
+using igaprep::param::spread_face_params;
+
+std::vector<double> uniform(int m) {
+  std::vector<double> p(static_cast<std::size_t>(m));
+  for (int i = 0; i < m; ++i) p[static_cast<std::size_t>(i)] = static_cast<double>(i) / (m - 1);
+  return p;
+}
+
+// Ends bunched at s = 0 as in a fan (x = s^8: the last gap is half the
+// curve) come out evenly spaced, to a tenth of the even gap.
+TEST(EvenEndParams, BunchedEndsComeOutEvenlySpaced) {
+  const std::vector<double> p = uniform(13);
+  auto end = [](double s) { return Eigen::Vector3d(std::pow(s, 8), 0.0, 0.0); };
+  std::vector<Eigen::Vector3d> ends;
+  for (double s : p) ends.push_back(end(s));
+  const std::vector<double> q = even_end_params(end, p, ends);
+  ASSERT_EQ(q.size(), p.size());
+  EXPECT_EQ(q.front(), 0.0);
+  EXPECT_EQ(q.back(), 1.0);
+  for (std::size_t i = 0; i < q.size(); ++i) EXPECT_NEAR(end(q[i]).x(), p[i], 0.1 / 12) << i;
+  for (std::size_t i = 1; i < q.size(); ++i) EXPECT_GT(q[i], q[i - 1]);
+}
+
+// Ends whose largest gap is within 3 times the mean stay where they are
+// (x = s^2: largest gap 23/144 against the mean 1/12).
+TEST(EvenEndParams, EndsThatAreNotUnevenKeepTheirParameters) {
+  const std::vector<double> p = uniform(13);
+  auto end = [](double s) { return Eigen::Vector3d(s * s, 0.0, 0.0); };
+  std::vector<Eigen::Vector3d> ends;
+  for (double s : p) ends.push_back(end(s));
+  EXPECT_EQ(even_end_params(end, p, ends), p);
+}
+
+// Over a face: rows bunched along s (x = s^8) are spread along s; the
+// columns, already even, keep t; the edge rows agree with the edge alone.
+TEST(SpreadFaceParams, RowsAreSpreadAndEdgesDependOnTheirEndsOnly) {
+  const int m = 9;
+  const std::vector<double> p = uniform(m);
+  auto end = [](const Eigen::Vector2d& x) { return Eigen::Vector3d(std::pow(x.x(), 8), x.y(), 0.0); };
+  std::vector<Eigen::Vector3d> ends;
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < m; ++i) ends.push_back(end({p[static_cast<std::size_t>(i)], p[static_cast<std::size_t>(j)]}));
+  const std::vector<Eigen::Vector2d> q = spread_face_params(end, p, ends);
+  ASSERT_EQ(q.size(), ends.size());
+  std::vector<Eigen::Vector3d> bottom(ends.begin(), ends.begin() + m);
+  const std::vector<double> edge = even_end_params([&](double s) { return end({s, 0.0}); }, p, bottom);
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < m; ++i) {
+      const Eigen::Vector2d& x = q[static_cast<std::size_t>(i + m * j)];
+      EXPECT_NEAR(x.y(), p[static_cast<std::size_t>(j)], 1e-12);
+      EXPECT_NEAR(end(x).x(), p[static_cast<std::size_t>(i)], 0.1 / (m - 1));
+      if (j == 0) EXPECT_EQ(x.x(), edge[static_cast<std::size_t>(i)]);
+    }
+}
+
+}  // namespace

@@ -28,12 +28,12 @@ std::array<DomainEdge, 4> box_sides(const Eigen::Vector4d& r) {
 
 }  // namespace
 
-BaseLayout base_layout(const InsetBase& base) {
+BaseLayout base_layout(const InsetBase& base, double max_aspect) {
   BaseLayout L;
   L.sheet = base.mesh;
   L.uv = base.uv;
   L.domain = base.domain;
-  L.rectangles = domain_rectangles(L.domain);
+  L.rectangles = domain_rectangles(L.domain, max_aspect);
   const RectilinearDomain& D = L.domain;
 
   // The domain's own sides: outward of the outer rectangle, into each hole.

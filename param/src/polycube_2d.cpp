@@ -677,7 +677,32 @@ Eigen::VectorXd uv_jacobians(const mesh::TriMesh& m, const Eigen::MatrixXd& uv) 
   return J;
 }
 
-std::vector<Eigen::Vector4d> domain_rectangles(const RectilinearDomain& dom) {
+namespace {
+
+void sort_unique(std::vector<double>& x) {
+  std::sort(x.begin(), x.end());
+  x.erase(std::unique(x.begin(), x.end()), x.end());
+}
+
+// Every interval of `lines` longer than max_aspect times the longest
+// interval of `across` is cut into equal parts no longer than that.
+void split_long_intervals(std::vector<double>& lines, const std::vector<double>& across, double max_aspect) {
+  double longest = 0.0;
+  for (std::size_t i = 1; i < across.size(); ++i) longest = std::max(longest, across[i] - across[i - 1]);
+  const double limit = max_aspect * longest;
+  std::vector<double> out;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const int parts = static_cast<int>(std::ceil((lines[i] - lines[i - 1]) / limit - 1e-9));
+    for (int k = 1; k < parts; ++k)
+      out.push_back(lines[i - 1] + (lines[i] - lines[i - 1]) * static_cast<double>(k) / parts);
+  }
+  lines.insert(lines.end(), out.begin(), out.end());
+  sort_unique(lines);
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector4d> domain_rectangles(const RectilinearDomain& dom, double max_aspect) {
   std::vector<double> xs{0.0, dom.width}, ys{0.0, dom.height};
   for (const auto& h : dom.holes) {
     xs.push_back(h(0));
@@ -685,10 +710,13 @@ std::vector<Eigen::Vector4d> domain_rectangles(const RectilinearDomain& dom) {
     ys.push_back(h(1));
     ys.push_back(h(3));
   }
-  std::sort(xs.begin(), xs.end());
-  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
-  std::sort(ys.begin(), ys.end());
-  ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
+  sort_unique(xs);
+  sort_unique(ys);
+  if (max_aspect > 0.0) {
+    const std::vector<double> xs0 = xs, ys0 = ys;
+    split_long_intervals(xs, ys0, max_aspect);
+    split_long_intervals(ys, xs0, max_aspect);
+  }
   std::vector<Eigen::Vector4d> rects;
   for (std::size_t j = 0; j + 1 < ys.size(); ++j)
     for (std::size_t i = 0; i + 1 < xs.size(); ++i) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <iterator>
 
 #include "igaprep/core/error.h"
 #include "igaprep/param/shell_spread.h"
@@ -66,8 +67,28 @@ ShellColumns::ShellColumns(const FieldProbe& probe, double step, int* hint, cons
 }
 
 StreamlineColumn ShellColumns::trace_from(const Eigen::Vector2d& p) {
-  ++streamlines_;
-  return trace_column(probe_, face_point(face_, params_, p), step_, hint_);
+  // Between the face's samples the bilinear face can leave H where H is
+  // curved and thin (a hub's wall): the start moves halfway to the nearest
+  // grid point, up to 4 times, then onto it (a function of p alone, so the
+  // faces that share an edge still agree).
+  auto nearest = [&](double x) {
+    const auto it = std::lower_bound(params_.begin(), params_.end(), x);
+    if (it == params_.begin()) return params_.front();
+    if (it == params_.end()) return params_.back();
+    return *it - x < x - *std::prev(it) ? *it : *std::prev(it);
+  };
+  const Eigen::Vector2d grid(nearest(p.x()), nearest(p.y()));
+  Eigen::Vector2d at = p;
+  for (int attempt = 0;; ++attempt) {
+    ++streamlines_;
+    try {
+      return trace_column(probe_, face_point(face_, params_, attempt < 5 ? at : grid), step_, hint_);
+    } catch (const Error& e) {
+      if (e.kind() == ErrorKind::Internal || attempt == 5) throw;
+      *hint_ = -1;
+      at = 0.5 * (at + grid);
+    }
+  }
 }
 
 void ShellColumns::trace_spread_columns(const std::function<bool(int)>& traced) {

@@ -100,6 +100,9 @@ void read_decomposition_section(const json& section, const std::string& file, pa
   base.inset = r.number_in("inset", base.inset, 0.05, 0.95);
   base.smoothing = r.integer("smoothing", base.smoothing, 0, 100);
   base.sliding_uv = r.boolean("sliding_uv", base.sliding_uv);
+  base.max_aspect = r.number_in("max_aspect", base.max_aspect, 0.0, 100.0);
+  if (base.max_aspect > 0.0 && base.max_aspect < 1.0)
+    r.fail("'decomposition.max_aspect' must be 0 (no cuts) or at least 1, got " + std::to_string(base.max_aspect));
   volume.strategy = r.integer("strategy", volume.strategy, 1, 2);
   volume.theta = r.number_in("theta", volume.theta, 0.05, 1.5);
   volume.w0 = r.number_in("w0", volume.w0, 0.0, 1.0);

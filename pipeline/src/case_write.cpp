@@ -99,6 +99,7 @@ void add_stage_options(const Case& c, json& root) {
   root["midsurface"] = mid;
   const auto& v = c.volume;
   root["decomposition"] = {{"inset", c.base.inset}, {"smoothing", c.base.smoothing}, {"sliding_uv", c.base.sliding_uv},
+                           {"max_aspect", c.base.max_aspect},
                            {"strategy", v.strategy}, {"theta", v.theta}, {"blend", v.blend},
                            {"crest_reach", v.crest_reach}, {"surface_degree", v.surface_degree}};
   if (v.w0 >= 0.0) root["decomposition"]["w0"] = v.w0;  // absent: midway, at least 0.75

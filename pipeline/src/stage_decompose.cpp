@@ -71,7 +71,7 @@ Decomposition decompose_stage(const Case& c, const Surfaces& surfaces, const par
   Decomposition d;
   d.H = param::decomposition_mesh(surfaces.meshes, base.m.mesh, c.tetmesh);
   d.w = param::w_field(d.H);
-  d.layout = param::base_layout(base.m);
+  d.layout = param::base_layout(base.m, c.base.max_aspect);
   d.diagonal = (d.H.tets.V.colwise().maxCoeff() - d.H.tets.V.colwise().minCoeff()).norm();
   StageSummary s{"decompose", timer.seconds(),
                  text("H: %lld vertices, %lld tets; w: %zu interior extrema (%d values flattened); M: %zu rectangles, %zu boundary segments",

@@ -1,5 +1,6 @@
 // The 2D polycube parameterization of M0trim (seed paper, section 4.2).
 #include <algorithm>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -111,5 +112,29 @@ TEST(PolycubeCorners, UserPointsSnapToTheNearestBoundaryVertex) {
     FAIL();
   } catch (const igaprep::Error& e) {
     EXPECT_NE(std::string(e.what()).find("got 3 corner points"), std::string::npos) << e.what();
+  }
+}
+
+// A long domain's grid is cut into rectangles at most max_aspect times the
+// longest interval across: 10 x 1 with a hole [4, 6] x [0.25, 0.75] has
+// columns 4, 2, 4 and rows 0.25, 0.5, 0.25 (the longest across: 0.5). At 4
+// each 4 becomes two of 2 (5 columns); at 2 every column is cut to 1.
+TEST(DomainRectangles, LongIntervalsAreCutIntoEqualParts) {
+  RectilinearDomain d;
+  d.width = 10.0;
+  d.height = 1.0;
+  d.holes.push_back(Eigen::Vector4d(4.0, 0.25, 6.0, 0.75));
+  EXPECT_EQ(domain_rectangles(d).size(), 8u);       // 3 x 3 less the hole
+  EXPECT_EQ(domain_rectangles(d, 8.0).size(), 8u);  // 4 is within 8 x 0.5
+  for (const auto& [aspect, count, longest] : {std::tuple{4.0, 14u, 2.0}, std::tuple{2.0, 28u, 1.0}}) {
+    const std::vector<Eigen::Vector4d> cut = domain_rectangles(d, aspect);
+    EXPECT_EQ(cut.size(), count) << aspect;  // 5 x 3 less the hole; 10 x 3 less its 2 cells
+    double area = 0.0, widest = 0.0;
+    for (const auto& r : cut) {
+      area += (r(2) - r(0)) * (r(3) - r(1));
+      widest = std::max(widest, r(2) - r(0));
+    }
+    EXPECT_NEAR(area, 10.0 - 1.0, 1e-12) << aspect;
+    EXPECT_NEAR(widest, longest, 1e-12) << aspect;
   }
 }

@@ -75,6 +75,8 @@ TEST(Case, BadKeysAreRefusedByName) {
       {R"(, "decomposition": {"surface_degree": 2.5})", "decomposition.surface_degree"},
       {R"(, "decomposition": {"surface_degree": 13})", "decomposition.surface_degree"},
       {R"(, "decomposition": {"sliding_uv": "yes"})", "'decomposition.sliding_uv' must be true or false"},
+      {R"(, "decomposition": {"max_aspect": 0.5})", "'decomposition.max_aspect' must be 0 (no cuts) or at least 1"},
+      {R"(, "decomposition": {"max_aspect": -1})", "decomposition.max_aspect"},
       {R"(, "fit": {"elements": 0})", "fit.elements"},
       {R"(, "fit": {"degree": 2.5})", "fit.degree"},
       {R"(, "fit": {"knots": 3})", "unknown key 'fit.knots'"},
@@ -103,7 +105,7 @@ TEST(Case, SurfacesAndMaterialsAreChecked) {
 }
 
 TEST(Case, ValuesAreReadAndPathsResolved) {
-  const Case c = parse_case(sphere2_case(R"(, "output": "out", "decomposition": {"inset": 0.4, "strategy": 1},
+  const Case c = parse_case(sphere2_case(R"(, "output": "out", "decomposition": {"inset": 0.4, "strategy": 1, "max_aspect": 3},
       "fit": {"elements": 4, "jacobian_target": 0}, "midsurface": {"cut": {"plane": {"point": [0, 0, 0.1],
       "normal": [0, 0, 2]}}}, "validation": {"solver": "cg", "patches": 0})"),
                             models_dir() + "/sphere2", "case.json");
@@ -112,6 +114,7 @@ TEST(Case, ValuesAreReadAndPathsResolved) {
   EXPECT_EQ(c.surfaces.at(1).file, models_dir() + "/sphere2/inner.off");
   EXPECT_EQ(c.base.inset, 0.4);
   EXPECT_EQ(c.base.smoothing, 5);  // the one default for M's smoothing
+  EXPECT_EQ(c.base.max_aspect, 3.0);
   EXPECT_EQ(c.volume.strategy, 1);
   EXPECT_EQ(c.fit.elements, 4);
   EXPECT_EQ(c.jacobian.target, 0.0);

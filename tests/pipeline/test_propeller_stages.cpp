@@ -51,17 +51,20 @@ TEST(PropellerStages, ThinSidesCutAndBlocks) {
 
   const auto base = igaprep::pipeline::base_stage(c, mid, quiet);
   const auto d = igaprep::pipeline::decompose_stage(c, s, base, quiet);
-  EXPECT_EQ(d.layout.rectangles.size(), 8u);
+  // The holes' grid has 8 rectangles, the blades' about 12 times as long as
+  // they are wide; cut to at most twice the longest interval across
+  // (decomposition.max_aspect): 38.
+  EXPECT_EQ(d.layout.rectangles.size(), 38u);
   const auto v = igaprep::pipeline::param_stage(c, d, quiet);
-  EXPECT_EQ(v.blocks.size(), 80u);
+  EXPECT_EQ(v.blocks.size(), 260u);
   // The hub is crossed by M at mid-height and its streamlines fan out: the
   // faces over it are spread (shell_spread.h). The blocks' signed volume
   // (folded cells counting negative) against the tet mesh's 1,759 mm^3:
-  // 1,295 before spreading, 1,486 with it.
+  // 1,295 with the 8 rectangles, 1,486 spread, 1,675 spread and cut.
   EXPECT_GE(v.spread_faces, 10);
   const auto blocks = igaprep::param::blocks_tet_mesh(v.blocks, 1e-9 * 90.0);
   const double volume = igaprep::mesh::tet_volumes(blocks.tets, 1).total;
-  EXPECT_GT(volume, 1450.0);
+  EXPECT_GT(volume, 1640.0);
   EXPECT_LT(volume, 1759.0);
 }
 

@@ -40,7 +40,8 @@ struct BaseLayout {
 // (in the outer rectangle and in no hole), boundary excluded.
 bool inside_domain(const RectilinearDomain& domain, const Eigen::Vector2d& p);
 
-// Inputs: the inset base surface. Output: its layout.
-BaseLayout base_layout(const InsetBase& base);
+// Inputs: the inset base surface; the largest aspect of the domain's grid
+// intervals (domain_rectangles; 0: the holes' grid as it is). Output: its layout.
+BaseLayout base_layout(const InsetBase& base, double max_aspect = 0.0);
 
 }  // namespace igaprep::param

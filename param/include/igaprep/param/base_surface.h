@@ -18,6 +18,10 @@ struct BaseSurfaceOptions {
   // intersects itself; 20 made M intersect itself on torus3).
   int smoothing = 5;
   bool sliding_uv = true;  // cut along the iso-lines of sliding_uv.h (else the midsurface's (u, v))
+  // The layout's grid intervals longer than this times the longest one
+  // across are cut into equal parts (0: the holes' grid as it is; the
+  // built-in models' intervals are within 1.6 of each other).
+  double max_aspect = 2.0;
 };
 
 struct BaseSurface {

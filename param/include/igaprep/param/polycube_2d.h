@@ -115,8 +115,11 @@ Eigen::VectorXd uv_jacobians(const mesh::TriMesh& sheet, const Eigen::MatrixXd& 
 
 // The domain cut into rectangles by extending every hole side across the
 // whole domain: the cells of the grid of all hole sides and the outer sides
-// that lie outside the holes. Each (umin, vmin, umax, vmax).
-std::vector<Eigen::Vector4d> domain_rectangles(const RectilinearDomain& domain);
+// that lie outside the holes. Each (umin, vmin, umax, vmax). With
+// max_aspect > 0, every interval of that grid longer than max_aspect times
+// the longest interval across it is cut into equal parts (a long, narrow
+// domain, like a propeller's, gets blocks of a sensible shape).
+std::vector<Eigen::Vector4d> domain_rectangles(const RectilinearDomain& domain, double max_aspect = 0.0);
 
 struct Polycube2D {
   SheetFrame frame;

@@ -35,32 +35,21 @@ double smoothstep(double h) { return h * h * (3.0 - 2.0 * h); }
 
 ShellColumns::ShellColumns(const FieldProbe& probe, double step, int* hint, const std::vector<double>& params,
                            const std::vector<Eigen::Vector3d>& face, const std::function<bool(int)>& traced,
-                           bool ruled, bool spread, const std::vector<double>& depths)
+                           const std::array<bool, 4>& fixed_sides, bool spread, const std::vector<double>& depths)
     : probe_(probe), step_(step), hint_(hint), params_(params), face_(face), depths_(depths) {
   const int m = static_cast<int>(params.size());
   grid_.resize(face.size());
-  for (int q = 0; q < m * m; ++q)
-    if (traced(q)) grid_[static_cast<std::size_t>(q)] = trace_from({params[static_cast<std::size_t>(q % m)],
-                                                                     params[static_cast<std::size_t>(q / m)]});
-  if (!spread) return;
-  auto end = [&](const Eigen::Vector2d& p) { return last_point(trace_from(p)); };
-  std::vector<Eigen::Vector2d> moved(face.size());
-  for (int q = 0; q < m * m; ++q)
-    moved[static_cast<std::size_t>(q)] = {params[static_cast<std::size_t>(q % m)], params[static_cast<std::size_t>(q / m)]};
-  const std::vector<Eigen::Vector2d> grid = moved;
-  if (!ruled) {
-    std::vector<Eigen::Vector3d> ends(face.size());
-    for (std::size_t q = 0; q < face.size(); ++q) ends[q] = last_point(grid_[q]);
-    moved = spread_face_params(end, params, ends);
-  } else {
-    for (const int j : {0, m - 1}) {
-      const double t = params[static_cast<std::size_t>(j)];
-      std::vector<Eigen::Vector3d> ends(static_cast<std::size_t>(m));
-      for (int i = 0; i < m; ++i) ends[static_cast<std::size_t>(i)] = last_point(grid_[static_cast<std::size_t>(i + m * j)]);
-      const std::vector<double> s = even_end_params([&](double x) { return end({x, t}); }, params, ends);
-      for (int i = 0; i < m; ++i) moved[static_cast<std::size_t>(i + m * j)].x() = s[static_cast<std::size_t>(i)];
-    }
+  std::vector<Eigen::Vector2d> grid(face.size());
+  for (int q = 0; q < m * m; ++q) {
+    grid[static_cast<std::size_t>(q)] = {params[static_cast<std::size_t>(q % m)], params[static_cast<std::size_t>(q / m)]};
+    if (traced(q)) grid_[static_cast<std::size_t>(q)] = trace_from(grid[static_cast<std::size_t>(q)]);
   }
+  if (!spread) return;
+  std::vector<Eigen::Vector3d> ends(face.size());
+  for (std::size_t q = 0; q < face.size(); ++q) ends[q] = last_point(grid_[q]);
+  std::vector<Eigen::Vector2d> moved =
+      spread_face_params([&](const Eigen::Vector2d& p) { return last_point(trace_from(p)); }, params, ends,
+                         fixed_sides);
   if (moved == grid) return;
   moved_ = std::move(moved);
   trace_spread_columns(traced);

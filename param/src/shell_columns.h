@@ -6,6 +6,7 @@
 // at p + s(h) (p' - p), p its grid parameter, p' the spread one and s the
 // smoothstep, so that the block starts on the face's grid (shared with the
 // core) and ends evenly spread on T1, every sample on a streamline.
+#include <array>
 #include <functional>
 #include <vector>
 
@@ -19,12 +20,12 @@ namespace igaprep::param {
 class ShellColumns {
  public:
   // face: m x m points (first index fastest) on params x params; traced(q):
-  // whether sample q is traced (a ruled face: its long edges only); ruled:
-  // only the rows j = 0 and m - 1 are spread, along the face; spread: try
-  // spreading at all (strategy 2).
+  // whether sample q is traced (a ruled face: its long edges only);
+  // fixed_sides: sides (bottom j = 0, right, top, left) not to spread;
+  // spread: try spreading at all (strategy 2, not a ruled face).
   ShellColumns(const FieldProbe& probe, double step, int* hint, const std::vector<double>& params,
-               const std::vector<Eigen::Vector3d>& face, const std::function<bool(int)>& traced, bool ruled,
-               bool spread, const std::vector<double>& depths);
+               const std::vector<Eigen::Vector3d>& face, const std::function<bool(int)>& traced,
+               const std::array<bool, 4>& fixed_sides, bool spread, const std::vector<double>& depths);
 
   // The streamline for sample q at depth h, one of the depths given.
   const StreamlineColumn& at(int q, double h) const;

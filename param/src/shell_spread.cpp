@@ -86,7 +86,7 @@ std::vector<double> even_end_params(const std::function<Eigen::Vector3d(double)>
 std::vector<Eigen::Vector2d> spread_face_params(const std::function<Eigen::Vector3d(const Eigen::Vector2d&)>& end,
                                                 const std::vector<double>& params,
                                                 const std::vector<Eigen::Vector3d>& ends,
-                                                const SpreadOptions& options) {
+                                                const std::array<bool, 4>& fixed_sides, const SpreadOptions& options) {
   const std::size_t m = params.size();
   if (ends.size() != m * m) throw internal_error("spread_face_params: need one end per grid point");
   std::vector<Eigen::Vector2d> rows(m * m);
@@ -95,8 +95,9 @@ std::vector<Eigen::Vector2d> spread_face_params(const std::function<Eigen::Vecto
     const double t = params[j];
     std::vector<Eigen::Vector3d> e(ends.begin() + static_cast<std::ptrdiff_t>(m * j),
                                    ends.begin() + static_cast<std::ptrdiff_t>(m * (j + 1)));
+    const bool fixed = (j == 0 && fixed_sides[0]) || (j == m - 1 && fixed_sides[2]);
     const std::vector<double> s =
-        even_end_params([&](double x) { return end(Eigen::Vector2d(x, t)); }, params, e, options);
+        fixed ? params : even_end_params([&](double x) { return end(Eigen::Vector2d(x, t)); }, params, e, options);
     for (std::size_t i = 0; i < m; ++i) {
       rows[i + m * j] = Eigen::Vector2d(s[i], t);
       row_ends[i + m * j] = s[i] == params[i] ? e[i] : end(rows[i + m * j]);
@@ -114,7 +115,9 @@ std::vector<Eigen::Vector2d> spread_face_params(const std::function<Eigen::Vecto
     };
     std::vector<Eigen::Vector3d> e(m);
     for (std::size_t j = 0; j < m; ++j) e[j] = row_ends[i + m * j];
-    const std::vector<double> u = even_end_params([&](double x) { return end(at(x)); }, params, e, options);
+    const bool fixed = (i == 0 && fixed_sides[3]) || (i == m - 1 && fixed_sides[1]);
+    const std::vector<double> u =
+        fixed ? params : even_end_params([&](double x) { return end(at(x)); }, params, e, options);
     for (std::size_t j = 0; j < m; ++j) out[i + m * j] = u == params ? rows[i + m * j] : at(u[j]);
   }
   return out;

@@ -314,6 +314,10 @@ struct ShellBase {
   // Strategy 1 crest fans: ruled in two halves, through the streamline
   // from this row (along M's binormal) as well; -1: no middle row.
   int ruled_mid = -1;
+  // Sides of a lid face (DomainSide order) on M's boundary: shared with a
+  // ruled crest face, whose two long edges cannot be spread alike (the P2
+  // edge is shared with the other crest face), so they are not spread.
+  std::array<bool, 4> fixed_sides{};
 };
 
 void add_block(VolumeParam& out, int m, BlockKind kind, int source, int layer, int material, Eigen::MatrixXd samples,
@@ -371,7 +375,10 @@ void add_core_blocks(const VolumeContext& ctx, const std::vector<RectGrid>& rect
         for (int q = 0; q < m * m; ++q) s.row(q + m * m * k) = lerp(rect[r].base[q], lid[q], ctx.params[k]).transpose();
       add_block(out, m, top ? BlockKind::CoreTop : BlockKind::CoreBottom, static_cast<int>(r), 0, ctx.n - 1,
                 std::move(s), -1);
-      faces.push_back({lid, lid});
+      ShellBase face{lid, lid};
+      for (const CrestSegment& seg : ctx.layout.crests)
+        if (seg.rectangle == static_cast<int>(r)) face.fixed_sides[static_cast<std::size_t>(seg.side)] = true;
+      faces.push_back(std::move(face));
     }
   }
 }
@@ -463,8 +470,8 @@ ShellColumns face_columns(VolumeContext& ctx, const ShellBase& face) {
   depths.erase(std::unique(depths.begin(), depths.end()), depths.end());
   const int m = ctx.m;
   return ShellColumns(ctx.probe, ctx.options.stream_step * ctx.diag, &ctx.hint, ctx.params, face.start,
-                      [&](int q) { return traced(face, m, q); }, face.ruled, !ctx.strategy1 && !face.collapsed,
-                      depths);
+                      [&](int q) { return traced(face, m, q); }, face.fixed_sides,
+                      !ctx.strategy1 && !face.collapsed && !face.ruled, depths);
 }
 
 // The samples of a face's shell block in layer (1..n): the columns cut at

@@ -62,6 +62,12 @@ TEST(SpreadFaceParams, RowsAreSpreadAndEdgesDependOnTheirEndsOnly) {
       EXPECT_NEAR(end(x).x(), p[static_cast<std::size_t>(i)], 0.1 / (m - 1));
       if (j == 0) EXPECT_EQ(x.x(), edge[static_cast<std::size_t>(i)]);
     }
+  // A fixed side keeps its grid points; the rows inside are still spread.
+  const std::vector<Eigen::Vector2d> kept = spread_face_params(end, p, ends, {true, false, false, false});
+  for (int i = 0; i < m; ++i) {
+    EXPECT_EQ(kept[static_cast<std::size_t>(i)], Eigen::Vector2d(p[static_cast<std::size_t>(i)], 0.0));
+    EXPECT_NEAR(end(kept[static_cast<std::size_t>(i + m * (m / 2))]).x(), p[static_cast<std::size_t>(i)], 0.2 / (m - 1));
+  }
 }
 
 }  // namespace

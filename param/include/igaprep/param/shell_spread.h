@@ -6,6 +6,7 @@
 // neighbouring samples of the face, and the shell block's face on T1 is a
 // chord across it. Here the face's sample parameters are moved so that the
 // streamlines' ends on T1 are evenly spaced (docs/decomposition.md).
+#include <array>
 #include <functional>
 #include <vector>
 
@@ -36,12 +37,14 @@ std::vector<double> even_end_params(const std::function<Eigen::Vector3d(double)>
 // The same over a face: m x m sample points (s, t) of the unit square, first
 // index fastest, from the grid params x params. Every row (t = params[j])
 // is spread along s, then every column through the rows' new points (a
-// polyline in (s, t)) along its length. On the square's edges a result
-// depends only on the ends along that edge. end(p): the end of the
-// streamline from the face at p; ends: at the grid points.
+// polyline in (s, t)) along its length; the square's sides marked fixed
+// (bottom t = 0, right s = 1, top t = 1, left s = 0) keep their points. On
+// a side a result depends only on the ends along it. end(p): the end of
+// the streamline from the face at p; ends: at the grid points.
 std::vector<Eigen::Vector2d> spread_face_params(const std::function<Eigen::Vector3d(const Eigen::Vector2d&)>& end,
                                                 const std::vector<double>& params,
                                                 const std::vector<Eigen::Vector3d>& ends,
+                                                const std::array<bool, 4>& fixed_sides = {},
                                                 const SpreadOptions& options = {});
 
 }  // namespace igaprep::param

@@ -15,9 +15,10 @@ namespace {
 // The hand is 0.26 thick across its palm and 0.73 wide. Its palm plane runs
 // through a face of the mesh (refused as it stands, taken when moved by a
 // thousandth of the diagonal) and its paths to M0 are about half the
-// thickness long; the plane across the hand's width is valid too, with paths
-// twice as long (mean 0.164), and was the one taken before the candidates
-// were scored.
+// thickness long, good enough to stop there; the plane across the hand's
+// width is valid too, with paths twice as long (mean 0.164), and was the one
+// taken before the palm plane was moved off its face and the candidates
+// scored.
 TEST(CutCandidates, TheHandIsCutAlongItsPalm) {
   const std::string obj = std::string(IGAPREP_SHARED_MODELS_DIR) + "/hand.obj";
   if (!std::filesystem::exists(obj)) GTEST_SKIP() << "shared model " << obj << " is absent";
@@ -26,7 +27,8 @@ TEST(CutCandidates, TheHandIsCutAlongItsPalm) {
   igaprep::pipeline::Observer quiet;
   const igaprep::pipeline::Surfaces s = igaprep::pipeline::load_surfaces(c);
   const auto mid = igaprep::pipeline::midsurface_stage(c, s, quiet);
-  EXPECT_GE(mid.valid.size(), 2u);
+  ASSERT_GE(mid.valid.size(), 1u);
+  EXPECT_NE(mid.valid.front().find("score"), std::string::npos) << mid.valid.front();
   EXPECT_NE(mid.cut.source.find("plane"), std::string::npos) << mid.cut.source;
   EXPECT_GT(mid.paths.mean, 0.05);
   EXPECT_LT(mid.paths.mean, 0.09);

@@ -337,6 +337,10 @@ std::vector<int> constraints(const MultiPatch& mp, const GlobalNumbering& num,
 
 }  // namespace
 
+// Sweeps without a new low in the number of active control points before
+// the repair stops (docs/decomposition.md, the fit).
+constexpr int kStallSweeps = 10;
+
 JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& slide,
                                               const std::vector<std::pair<int, int>>& fixed_sides,
                                               const JacobianOptimizationOptions& options) {
@@ -355,14 +359,32 @@ JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& sli
     start[static_cast<std::size_t>(g)] = mp.patches[static_cast<std::size_t>(c0.patch)].control_points.row(c0.local).transpose();
   }
   std::vector<char> moved(static_cast<std::size_t>(num.count), 0);
-  // Sweeps until no control point moves (or options.sweeps).
+  // Sweeps until no control point moves, or the number of control points
+  // next to samples below the target has not fallen to a new low for
+  // kStallSweeps sweeps (the folds left are held by points that cannot
+  // move them, and further moves only cost fidelity), or options.sweeps.
   auto sweeps = [&](Optimizer& opt) {
+    long long fewest_active = std::numeric_limits<long long>::max();
+    int since_fewest = 0;
+    out.stop_reason = "the sweep limit";
     for (int sweep = 0; sweep < options.sweeps; ++sweep) {
       long long moves = 0;
       std::vector<char> active(static_cast<std::size_t>(num.count), 0);
       opt.below_target(options.target, [&](int patch, int local) {
         active[static_cast<std::size_t>(num.global[static_cast<std::size_t>(patch)][static_cast<std::size_t>(local)])] = 1;
       });
+      const long long n_active = std::count(active.begin(), active.end(), 1);
+      if (n_active == 0) {
+        out.stop_reason = "the target reached";
+        break;
+      }
+      if (n_active < fewest_active) {
+        fewest_active = n_active;
+        since_fewest = 0;
+      } else if (++since_fewest >= kStallSweeps) {
+        out.stop_reason = "no progress in " + std::to_string(kStallSweeps) + " sweeps";
+        break;
+      }
       for (int g = 0; g < num.count; ++g) {
         const int con = cons[static_cast<std::size_t>(g)];
         if (con == kFixed || !active[static_cast<std::size_t>(g)]) continue;
@@ -373,7 +395,10 @@ JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& sli
       }
       out.moves += moves;
       ++out.sweeps;
-      if (moves == 0) break;
+      if (moves == 0) {
+        out.stop_reason = "no control point can move";
+        break;
+      }
     }
   };
   std::vector<int> points(mp.patches.size(), options.points);

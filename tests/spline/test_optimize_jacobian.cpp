@@ -102,6 +102,7 @@ TEST(OptimizeJacobian, RaisesSkewedInterior) {
   EXPECT_GT(dense_after, dense_before);
   EXPECT_GT(r.moved_points, 0);
   EXPECT_GT(r.max_move, 0.0);
+  EXPECT_EQ(r.stop_reason, "the target reached");
   for (const Side side : Side::all()) EXPECT_TRUE(side_unchanged(before, mp.patches[0], side)) << "side " << side;
 }
 
@@ -185,6 +186,10 @@ TEST(OptimizeJacobian, MinimumNeverFalls) {
   EXPECT_LT(r.min_after, 0.35);
   EXPECT_GE(r.min_after, r.min_before);
   EXPECT_GT(r.moved_points, 0);  // interior points did move
+  // It says why it stopped short of the target, before the 40-sweep limit.
+  EXPECT_TRUE(r.stop_reason == "no control point can move" || r.stop_reason == "no progress in 10 sweeps")
+      << r.stop_reason;
+  EXPECT_LT(r.sweeps, 40);
 }
 
 // Bad options, rational patches and bad sides are bad input.

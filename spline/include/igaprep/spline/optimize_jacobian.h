@@ -17,6 +17,7 @@
 // target (a fold between the first samples), the patch is optimized again on
 // the dense samples.
 #include <functional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -46,6 +47,9 @@ struct JacobianOptimizationResult {
   int sweeps = 0;                            // sweeps run (both passes)
   int dense_patches = 0;                     // patches optimized again on twice as dense samples
   double max_move = 0.0;                     // largest distance a control point moved
+  // Why the last pass stopped: "the target reached", "no control point can
+  // move", "no progress in 10 sweeps" or "the sweep limit".
+  std::string stop_reason;
 };
 
 // The position a control point on surface `surface` (a label index: 0 = T1)

@@ -46,7 +46,10 @@ ShellColumns::ShellColumns(const FieldProbe& probe, double step, int* hint, cons
   }
   if (!spread) return;
   std::vector<Eigen::Vector3d> ends(face.size());
-  for (std::size_t q = 0; q < face.size(); ++q) ends[q] = last_point(grid_[q]);
+  for (int q = 0; q < m * m; ++q) {
+    if (!traced(q)) throw internal_error("shell columns: a face is spread only when every sample is traced");
+    ends[static_cast<std::size_t>(q)] = last_point(grid_[static_cast<std::size_t>(q)]);
+  }
   std::vector<Eigen::Vector2d> moved =
       spread_face_params([&](const Eigen::Vector2d& p) { return last_point(trace_from(p)); }, params, ends,
                          fixed_sides);
@@ -74,7 +77,7 @@ StreamlineColumn ShellColumns::trace_from(const Eigen::Vector2d& p) {
       return trace_column(probe_, face_point(face_, params_, attempt < 5 ? at : grid), step_, hint_);
     } catch (const Error& e) {
       if (e.kind() == ErrorKind::Internal || attempt == 5) throw;
-      *hint_ = -1;
+      if (hint_) *hint_ = -1;  // the failed walk left it anywhere
       at = 0.5 * (at + grid);
     }
   }

@@ -295,8 +295,6 @@ CutLoops cut_by_plane(const mesh::TriMesh& T1, const CutPlane& plane, const std:
   return insert_zero_set(T1, s, name, src.str());
 }
 
-
-
 CutLoops cut_by_field(const mesh::TriMesh& T1, const Eigen::VectorXd& field, const std::string& name,
                       const std::string& source, double snap) {
   if (field.size() != T1.V.rows() || !field.allFinite())

@@ -15,13 +15,8 @@ namespace {
 Eigen::Vector3d face_point(const std::vector<Eigen::Vector3d>& face, const std::vector<double>& params,
                            const Eigen::Vector2d& p) {
   const std::size_t m = params.size();
-  auto cell = [&](double x) {
-    const auto it = std::upper_bound(params.begin(), params.end(), x);
-    return std::clamp<std::size_t>(static_cast<std::size_t>(it - params.begin()), 1, m - 1) - 1;
-  };
-  const std::size_t i = cell(p.x()), j = cell(p.y());
-  const double a = (p.x() - params[i]) / (params[i + 1] - params[i]);
-  const double b = (p.y() - params[j]) / (params[j + 1] - params[j]);
+  const auto [i, a] = param_cell(params, p.x());
+  const auto [j, b] = param_cell(params, p.y());
   const Eigen::Vector3d lo = (1.0 - a) * face[i + m * j] + a * face[i + 1 + m * j];
   const Eigen::Vector3d hi = (1.0 - a) * face[i + m * (j + 1)] + a * face[i + 1 + m * (j + 1)];
   return (1.0 - b) * lo + b * hi;

@@ -66,6 +66,12 @@ std::vector<double> even_by_chord(const std::list<CurvePoint>& curve, std::size_
 
 }  // namespace
 
+ParamCell param_cell(const std::vector<double>& params, double x) {
+  const auto it = std::upper_bound(params.begin(), params.end(), x);
+  const std::size_t hi = std::clamp<std::size_t>(static_cast<std::size_t>(it - params.begin()), 1, params.size() - 1);
+  return {hi - 1, (x - params[hi - 1]) / (params[hi] - params[hi - 1])};
+}
+
 std::vector<double> even_end_params(const std::function<Eigen::Vector3d(double)>& end,
                                     const std::vector<double>& params, const std::vector<Eigen::Vector3d>& ends,
                                     const SpreadOptions& options) {
@@ -107,11 +113,8 @@ std::vector<Eigen::Vector2d> spread_face_params(const std::function<Eigen::Vecto
   for (std::size_t i = 0; i < m; ++i) {
     // The column is the polyline through the rows' points, at u = params[j].
     auto at = [&](double u) {
-      const std::size_t hi = std::min<std::size_t>(
-          m - 1, std::max<std::size_t>(1, static_cast<std::size_t>(std::upper_bound(params.begin(), params.end(), u) -
-                                                                    params.begin())));
-      const double w = (u - params[hi - 1]) / (params[hi] - params[hi - 1]);
-      return Eigen::Vector2d((1.0 - w) * rows[i + m * (hi - 1)] + w * rows[i + m * hi]);
+      const ParamCell c = param_cell(params, u);
+      return Eigen::Vector2d((1.0 - c.w) * rows[i + m * c.i] + c.w * rows[i + m * (c.i + 1)]);
     };
     std::vector<Eigen::Vector3d> e(m);
     for (std::size_t j = 0; j < m; ++j) e[j] = row_ends[i + m * j];

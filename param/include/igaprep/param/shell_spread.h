@@ -7,6 +7,7 @@
 // chord across it. Here the face's sample parameters are moved so that the
 // streamlines' ends on T1 are evenly spaced (docs/decomposition.md).
 #include <array>
+#include <cstddef>
 #include <functional>
 #include <vector>
 
@@ -22,6 +23,16 @@ struct SpreadOptions {
   int refinements = 12;  // halvings of a parameter interval, at most
   int per_gap = 4;       // the curve of ends is refined to this many chords per even gap
 };
+
+// The interval of the ascending params (0 first, 1 last) that holds x:
+// params[i] <= x <= params[i + 1], and x's fraction w in it. Exact at the
+// parameters (w = 0 at params[i], w = 1 at the last one), so that values
+// interpolated there are the samples bit for bit.
+struct ParamCell {
+  std::size_t i;
+  double w;
+};
+ParamCell param_cell(const std::vector<double>& params, double x);
 
 // Inputs: the curve s -> end(s) for s in [0, 1], its ends at the ascending
 // params (0 first, 1 last). Output: parameters from 0 to 1 at which the ends

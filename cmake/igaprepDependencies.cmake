@@ -7,6 +7,8 @@ find_dependency(Eigen3 3.3 NO_MODULE)
 find_dependency(CGAL)
 find_dependency(nlohmann_json 3)
 find_dependency(OpenSSL)
+# Ceres Solver (libceres-dev): the L-BFGS of spline/'s joint Jacobian repair.
+find_dependency(Ceres)
 # FindHDF5 test-compiles a C program: a C++-only consumer needs C enabled.
 if(NOT CMAKE_C_COMPILER_LOADED)
   enable_language(C)

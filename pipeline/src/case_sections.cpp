@@ -119,6 +119,7 @@ void read_fit_section(const json& section, const std::string& file, spline::Bloc
   fit.elements = r.integer("elements", fit.elements, 1, 32);
   fit.oversample = r.integer("oversample", fit.oversample, 1, 8);
   jacobian.target = r.number_in("jacobian_target", jacobian.target, 0.0, 0.9);
+  jacobian.iterations = r.integer("jacobian_iterations", jacobian.iterations, 0, 100000);
   jacobian.sweeps = r.integer("jacobian_sweeps", jacobian.sweeps, 0, 1000);
   jacobian.points = r.integer("jacobian_points", jacobian.points, 2, 9);
   r.refuse_unknown();

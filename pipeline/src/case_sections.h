@@ -6,7 +6,8 @@
 //   "decomposition": {"strategy": 2, "theta": 1.1, "w0": 0.75 (absent: midway), "inset": 0.3, "smoothing": 5,
 //                     "sliding_uv": true, "max_aspect": 2, "blend": 1.0, "crest_reach": 1.0, "surface_degree": 6}
 //   "fit": {"degree": 3, "elements": 6, "oversample": 2,
-//           "jacobian_target": 0.35, "jacobian_sweeps": 40, "jacobian_points": 5}
+//           "jacobian_target": 0.35, "jacobian_iterations": 200, "jacobian_sweeps": 40,
+//           "jacobian_points": 5}
 #include <string>
 
 #include <nlohmann/json.hpp>

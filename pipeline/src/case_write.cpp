@@ -104,7 +104,8 @@ void add_stage_options(const Case& c, json& root) {
                            {"crest_reach", v.crest_reach}, {"surface_degree", v.surface_degree}};
   if (v.w0 >= 0.0) root["decomposition"]["w0"] = v.w0;  // absent: midway, at least 0.75
   root["fit"] = {{"degree", c.fit.degree}, {"elements", c.fit.elements}, {"oversample", c.fit.oversample},
-                 {"jacobian_target", c.jacobian.target}, {"jacobian_sweeps", c.jacobian.sweeps},
+                 {"jacobian_target", c.jacobian.target}, {"jacobian_iterations", c.jacobian.iterations},
+                 {"jacobian_sweeps", c.jacobian.sweeps},
                  {"jacobian_points", c.jacobian.points}};
   root["export"] = c.export_formats;
   root["validation"] = validation_json(c.validation);

@@ -68,9 +68,11 @@ Fit fit_stage(const Case& c, const Decomposition& d, const param::VolumeParam& v
     out.jacobians = raise_jacobians(c, d, vp, mp);
     const auto& r = out.jacobians;
     s.details.push_back(text("Jacobians %.2f s: lowest sampled scaled Jacobian %.3f -> %.3f, points below %.2f: %d -> "
-                             "%d (%d control points moved, at most %.2g, %d sweeps, %d patches on dense samples; stopped: %s)",
+                             "%d (%d control points moved, at most %.2g, %d patches on dense samples; joint: %d points, "
+                             "%d iterations, stopped: %s; %d sweeps, stopped: %s)",
                              jt.seconds(), r.min_before, r.min_after, c.jacobian.target, r.below_before,
-                             r.below_after, r.moved_points, r.max_move, r.sweeps, r.dense_patches,
+                             r.below_after, r.moved_points, r.max_move, r.dense_patches, r.joint_variables,
+                             r.joint_iterations, r.joint_stop.empty() ? "off" : r.joint_stop.c_str(), r.sweeps,
                              r.stop_reason.c_str()));
   }
   s.seconds = timer.seconds();

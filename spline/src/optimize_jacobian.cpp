@@ -12,20 +12,16 @@
 #include "igaprep/spline/knot_vector.h"
 #include "igaprep/spline/multipatch_topology.h"
 #include "igaprep/spline/scaled_jacobian.h"
+#include "joint_repair.h"
+#include "repair_common.h"
 
 namespace igaprep::spline {
 
 namespace {
 
-constexpr int kFree = -1, kFixed = -2;
-
-// The scaled Jacobian this step raises (spline::scaled_jacobian, the one the
-// check reports), or +infinity where J is degenerate (a collapsed side): the
-// check reports 0 there, but no control point can raise it, so the
-// optimizer leaves those points out of every minimum.
-double scaled(const Eigen::Matrix3d& J) {
-  return degenerate_jacobian(J) ? std::numeric_limits<double>::infinity() : scaled_jacobian(J);
-}
+using detail::Copy;
+using detail::kFixed;
+using detail::repair_scaled;
 
 // One basis function's value and derivative at a sample point of one direction.
 struct Entry {
@@ -42,20 +38,10 @@ struct PatchSamples {
   std::array<std::vector<int>, 3> first;            // [direction][point]: first control index non-zero there
   std::array<int, 3> degree{};
   std::vector<Eigen::Matrix3d> J;                   // per sample point, i fastest
-  std::vector<double> q;                            // scaled(J), kept up to date
+  std::vector<double> q;                            // repair_scaled(J), kept up to date
 
   int index(int i, int j, int k) const { return i + n[0] * (j + n[1] * k); }
 };
-
-// Sample parameters of one direction: `points` per element, ends included,
-// each element boundary once.
-std::vector<double> sample_params(const std::vector<double>& knots, int points) {
-  const std::vector<double> brk = unique_knots(knots);
-  std::vector<double> params;
-  for (std::size_t e = 0; e + 1 < brk.size(); ++e)
-    for (int t = e == 0 ? 0 : 1; t < points; ++t) params.push_back(brk[e] + (brk[e + 1] - brk[e]) * t / (points - 1));
-  return params;
-}
 
 // Scaled Jacobians of a patch on a tensor grid (evaluate_grid: sum
 // factorisation), i fastest.
@@ -72,7 +58,7 @@ PatchSamples sample_patch(const Patch& p, int points) {
   PatchSamples s;
   std::array<std::vector<double>, 3> params;
   for (int d = 0; d < 3; ++d) {
-    params[static_cast<std::size_t>(d)] = sample_params(p.knots[static_cast<std::size_t>(d)], points);
+    params[static_cast<std::size_t>(d)] = detail::repair_sample_params(p.knots[static_cast<std::size_t>(d)], points);
     const int deg = p.degrees[static_cast<std::size_t>(d)];
     const BasisTable tab = basis_table(p.knots[static_cast<std::size_t>(d)], deg, params[static_cast<std::size_t>(d)], 1);
     s.n[static_cast<std::size_t>(d)] = tab.size();
@@ -88,22 +74,18 @@ PatchSamples sample_patch(const Patch& p, int points) {
   }
   s.J = grid_jacobians(p, params);
   s.q.resize(s.J.size());
-  for (std::size_t i = 0; i < s.J.size(); ++i) s.q[i] = scaled(s.J[i]);
+  for (std::size_t i = 0; i < s.J.size(); ++i) s.q[i] = repair_scaled(s.J[i]);
   return s;
 }
 
 // The lowest scaled Jacobian of a patch sampled with `points` per element and direction.
 double patch_min_at(const Patch& p, int points) {
   std::array<std::vector<double>, 3> params;
-  for (int d = 0; d < 3; ++d) params[static_cast<std::size_t>(d)] = sample_params(p.knots[static_cast<std::size_t>(d)], points);
+  for (int d = 0; d < 3; ++d) params[static_cast<std::size_t>(d)] = detail::repair_sample_params(p.knots[static_cast<std::size_t>(d)], points);
   double lo = std::numeric_limits<double>::infinity();
-  for (const Eigen::Matrix3d& J : grid_jacobians(p, params)) lo = std::min(lo, scaled(J));
+  for (const Eigen::Matrix3d& J : grid_jacobians(p, params)) lo = std::min(lo, repair_scaled(J));
   return lo;
 }
-
-struct Copy {
-  int patch, local, a, b, c;
-};
 
 class Optimizer {
  public:
@@ -135,7 +117,7 @@ class Optimizer {
     q.clear();
     double lo = std::numeric_limits<double>::infinity();
     for_support(copies, delta, [&](const Eigen::Matrix3d& J, const Eigen::Matrix3d& dJ, double) {
-      const double v = scaled(J + dJ);
+      const double v = repair_scaled(J + dJ);
       if (std::isfinite(v)) {
         q.push_back(v);
         lo = std::min(lo, v);
@@ -173,7 +155,7 @@ class Optimizer {
     thread_local std::vector<double> q;
     q.clear();
     for (const Item& it : items) {
-      const double v = scaled(*it.J + delta * it.g);
+      const double v = repair_scaled(*it.J + delta * it.g);
       if (std::isfinite(v)) {
         q.push_back(v);
         lo = std::min(lo, v);
@@ -190,7 +172,7 @@ class Optimizer {
   void apply(const std::vector<Copy>& copies, const Eigen::Vector3d& delta) {
     for_support(copies, delta, [](Eigen::Matrix3d& J, const Eigen::Matrix3d& dJ, double& q) {
       J += dJ;
-      q = scaled(J);
+      q = repair_scaled(J);
     });
     for (const Copy& cp : copies) mp_.patches[static_cast<std::size_t>(cp.patch)].control_points.row(cp.local) += delta.transpose();
   }
@@ -229,7 +211,7 @@ class Optimizer {
     if (!(worst < target)) return false;
     const Eigen::Vector3d x =
         mp_.patches[static_cast<std::size_t>(copies.front().patch)].control_points.row(copies.front().local).transpose();
-    const double edge = nearest_neighbour(copies, x);
+    const double edge = detail::nearest_neighbour(mp_, copies, x);
     if (!std::isfinite(edge)) return false;
     // Central differences of the soft minimum.
     const double h = 1e-5 * edge;
@@ -259,23 +241,6 @@ class Optimizer {
     return false;
   }
 
-  // Distance from x to the nearest neighbouring control point in any copy's grid.
-  double nearest_neighbour(const std::vector<Copy>& copies, const Eigen::Vector3d& x) const {
-    double edge = std::numeric_limits<double>::infinity();
-    for (const Copy& c : copies) {
-      const Patch& p = mp_.patches[static_cast<std::size_t>(c.patch)];
-      for (int d = 0; d < 3; ++d)
-        for (int step : {-1, 1}) {
-          std::array<int, 3> q{{c.a, c.b, c.c}};
-          q[static_cast<std::size_t>(d)] += step;
-          if (q[static_cast<std::size_t>(d)] < 0 || q[static_cast<std::size_t>(d)] >= p.count(d)) continue;
-          const double l = (p.control_points.row(p.index(q[0], q[1], q[2])).transpose() - x).norm();
-          if (l > 0.0) edge = std::min(edge, l);
-        }
-    }
-    return edge;
-  }
-
   void global(double target, double* worst, int* below) const {
     *worst = std::numeric_limits<double>::infinity();
     *below = 0;
@@ -294,47 +259,6 @@ class Optimizer {
   std::vector<Item> items_;
 };
 
-// Per global control point, its copies in the patches that hold it.
-std::vector<std::vector<Copy>> control_point_copies(const MultiPatch& mp, const GlobalNumbering& num) {
-  std::vector<std::vector<Copy>> copies(static_cast<std::size_t>(num.count));
-  for (std::size_t pi = 0; pi < mp.patches.size(); ++pi) {
-    const Patch& p = mp.patches[pi];
-    for (int c = 0; c < p.count(2); ++c)
-      for (int b = 0; b < p.count(1); ++b)
-        for (int a = 0; a < p.count(0); ++a) {
-          const int l = p.index(a, b, c);
-          copies[static_cast<std::size_t>(num.global[pi][static_cast<std::size_t>(l)])].push_back({static_cast<int>(pi), l, a, b, c});
-        }
-  }
-  return copies;
-}
-
-// Per global control point: kFree, the surface it slides on (labelled
-// boundary sides, interfaces on a surface), or kFixed (fixed sides, two
-// surfaces, or a surface without a slide function).
-std::vector<int> constraints(const MultiPatch& mp, const GlobalNumbering& num,
-                             const std::vector<std::pair<int, int>>& fixed_sides, bool can_slide) {
-  std::vector<int> cons(static_cast<std::size_t>(num.count), kFree);
-  auto mark = [&](int patch, Side side, int surface) {
-    if (patch < 0 || static_cast<std::size_t>(patch) >= mp.patches.size() || !side.valid())
-      throw bad_input("optimize_jacobians: bad side (patch " + std::to_string(patch) + ", side " + std::to_string(side) + ")");
-    for (int l : side_control_points(mp.patches[static_cast<std::size_t>(patch)], side)) {
-      int& c = cons[static_cast<std::size_t>(num.global[static_cast<std::size_t>(patch)][static_cast<std::size_t>(l)])];
-      if (surface == kFixed) c = kFixed;
-      else if (c == kFree) c = surface;
-      else if (c != surface) c = kFixed;
-    }
-  };
-  for (const BoundarySide& b : mp.boundaries) mark(b.patch, b.side, b.label);
-  for (const Interface& itf : mp.interfaces)
-    if (itf.surface >= 0) mark(itf.patch_a, itf.side_a, itf.surface), mark(itf.patch_b, itf.side_b, itf.surface);
-  for (const auto& [patch, side] : fixed_sides) mark(patch, side, kFixed);
-  if (!can_slide)
-    for (int& c : cons)
-      if (c >= 0) c = kFixed;
-  return cons;
-}
-
 }  // namespace
 
 // Sweeps without a new low in the number of active control points before
@@ -344,13 +268,13 @@ constexpr int kStallSweeps = 10;
 JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& slide,
                                               const std::vector<std::pair<int, int>>& fixed_sides,
                                               const JacobianOptimizationOptions& options) {
-  if (options.sweeps < 0 || options.points < 2 || !(options.target >= 0.0 && options.target <= 1.0))
-    throw bad_input("optimize_jacobians: need sweeps >= 0, points >= 2 and a target in [0, 1]");
+  if (options.sweeps < 0 || options.iterations < 0 || options.points < 2 || !(options.target >= 0.0 && options.target <= 1.0))
+    throw bad_input("optimize_jacobians: need sweeps >= 0, iterations >= 0, points >= 2 and a target in [0, 1]");
   for (const Patch& p : mp.patches)
     if (p.rational()) throw bad_input("optimize_jacobians: rational patches are not supported");
   const GlobalNumbering num = global_numbering(mp);
-  const std::vector<std::vector<Copy>> copies = control_point_copies(mp, num);
-  const std::vector<int> cons = constraints(mp, num, fixed_sides, static_cast<bool>(slide));
+  const std::vector<std::vector<Copy>> copies = detail::control_point_copies(mp, num);
+  const std::vector<int> cons = detail::control_point_constraints(mp, num, fixed_sides, static_cast<bool>(slide));
 
   JacobianOptimizationResult out;
   std::vector<Eigen::Vector3d> start(static_cast<std::size_t>(num.count));
@@ -401,13 +325,25 @@ JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& sli
       }
     }
   };
+  // The joint optimization first, then sweeps for what it left below the target.
+  auto repair = [&](const std::vector<int>& points) {
+    if (options.iterations > 0) {
+      const detail::JointRepairResult j =
+          detail::joint_repair(mp, copies, cons, slide, options.target, points, options.iterations, &moved);
+      out.joint_variables += j.variables;
+      out.joint_iterations += j.iterations;
+      out.joint_stop = j.stop;
+    }
+    Optimizer opt(mp, points);
+    sweeps(opt);
+    opt.global(options.target, &out.min_after, &out.below_after);
+  };
   std::vector<int> points(mp.patches.size(), options.points);
-  Optimizer coarse(mp, points);
-  coarse.global(options.target, &out.min_before, &out.below_before);
-  sweeps(coarse);
+  Optimizer(mp, points).global(options.target, &out.min_before, &out.below_before);
+  repair(points);
   // A fold can open between the sample points where control points moved:
   // those patches are sampled twice as densely, and where that finds a point
-  // well below the target they are optimized again on the dense samples.
+  // well below the target they are repaired again on the dense samples.
   std::vector<char> touched(mp.patches.size(), 0);
   for (int g = 0; g < num.count; ++g)
     if (moved[static_cast<std::size_t>(g)])
@@ -420,13 +356,7 @@ JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& sli
       any_dense = true;
       ++out.dense_patches;
     }
-  if (any_dense) {
-    Optimizer fine(mp, points);
-    sweeps(fine);
-    fine.global(options.target, &out.min_after, &out.below_after);
-  } else {
-    coarse.global(options.target, &out.min_after, &out.below_after);
-  }
+  if (any_dense) repair(points);
   for (int g = 0; g < num.count; ++g) {
     if (!moved[static_cast<std::size_t>(g)]) continue;
     ++out.moved_points;

@@ -82,6 +82,7 @@ TEST(Case, BadKeysAreRefusedByName) {
       {R"(, "fit": {"knots": 3})", "unknown key 'fit.knots'"},
       {R"(, "fit": {"jacobian_target": 0.95})", "fit.jacobian_target"},
       {R"(, "fit": {"jacobian_sweeps": 2.5})", "fit.jacobian_sweeps"},
+      {R"(, "fit": {"jacobian_iterations": -1})", "fit.jacobian_iterations"},
       {R"(, "fit": {"jacobian_points": 1})", "fit.jacobian_points"},
       {R"(, "colour": 1)", "unknown key 'colour'"},
   };

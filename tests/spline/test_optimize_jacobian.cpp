@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -192,6 +193,67 @@ TEST(OptimizeJacobian, MinimumNeverFalls) {
   EXPECT_LT(r.sweeps, 40);
 }
 
+// The joint optimization alone (no sweeps) repairs what the sweeps repair:
+// the skewed interior point, a point that has to slide on its labelled
+// side, and a shared face that must stay conforming.
+JacobianOptimizationOptions joint_only() {
+  JacobianOptimizationOptions o;
+  o.sweeps = 0;
+  return o;
+}
+
+TEST(OptimizeJacobian, JointAloneRaisesSkewedInterior) {
+  MultiPatch mp = model({skewed_cube()});
+  label_sides(mp, 0, 0);
+  const Patch before = mp.patches[0];
+  const JacobianOptimizationResult r = optimize_jacobians(mp, nullptr, {}, joint_only());
+  EXPECT_EQ(r.joint_stop, "the target reached");
+  EXPECT_EQ(r.sweeps, 0);
+  EXPECT_GT(r.joint_iterations, 0);
+  EXPECT_LT(r.min_before, 0.2);
+  EXPECT_GE(r.min_after, 0.35);
+  EXPECT_GT(dense_min(mp.patches[0]), 0.3);
+  EXPECT_LT(r.max_move, 0.27 * std::sqrt(3.0));  // no further than the point was pushed out
+  for (const Side side : Side::all()) EXPECT_TRUE(side_unchanged(before, mp.patches[0], side)) << "side " << side;
+}
+
+TEST(OptimizeJacobian, JointAloneSlidesOnLabelledSide) {
+  MultiPatch mp = model({skewed_bottom()});
+  for (const Side side : Side::all()) mp.boundaries.push_back({0, side, side == kW0 ? 0 : 1});
+  const Patch before = mp.patches[0];
+  const SlideFn slide = [](int surface, const Eigen::Vector3d& from, const Eigen::Vector3d& to) -> Eigen::Vector3d {
+    return surface == 0 ? Eigen::Vector3d(to.x(), to.y(), from.z()) : from;
+  };
+  const JacobianOptimizationResult r = optimize_jacobians(mp, slide, {}, joint_only());
+  EXPECT_EQ(r.joint_stop, "the target reached");
+  EXPECT_GE(r.min_after, 0.35);
+  int slid = 0;
+  for (int l : side_control_points(before, kW0)) {
+    EXPECT_EQ(mp.patches[0].control_points(l, 2), before.control_points(l, 2)) << "point " << l;
+    slid += mp.patches[0].control_points(l, 0) != before.control_points(l, 0);
+  }
+  EXPECT_GT(slid, 0);
+  for (const Side side : Side::all())
+    if (side != kW0) EXPECT_TRUE(side_unchanged(before, mp.patches[0], side)) << "side " << side;
+}
+
+TEST(OptimizeJacobian, JointAloneKeepsSharedFaceConforming) {
+  MultiPatch mp = model({box(0.0, 0.5), box(0.5, 1.0)});
+  const Eigen::RowVector3d D = 0.17 * Eigen::RowVector3d(0, 1, -1);
+  mp.patches[0].control_points.row(mp.patches[0].index(5, 1, 1)) += D;
+  mp.patches[1].control_points.row(mp.patches[1].index(0, 1, 1)) += D;
+  find_interfaces(mp, 1e-9);
+  for (const Side side : Side::all()) {
+    if (side != kU1) mp.boundaries.push_back({0, side, 0});
+    if (side != kU0) mp.boundaries.push_back({1, side, 0});
+  }
+  const JacobianOptimizationResult r = optimize_jacobians(mp, nullptr, {}, joint_only());
+  EXPECT_LT(r.min_before, 0.2);
+  EXPECT_GE(r.min_after, 0.35);
+  const ConformityReport report = check_conformity(mp, 1e-12);
+  EXPECT_TRUE(report.conforming) << (report.problems.empty() ? "" : report.problems[0]);
+}
+
 // Bad options, rational patches and bad sides are bad input.
 TEST(OptimizeJacobian, BadInputThrows) {
   auto bad_input = [](MultiPatch mp, const std::vector<std::pair<int, int>>& fixed, JacobianOptimizationOptions o) {
@@ -203,12 +265,14 @@ TEST(OptimizeJacobian, BadInputThrows) {
     return false;
   };
   const MultiPatch mp = model({box()});
-  JacobianOptimizationOptions points, sweeps, target;
+  JacobianOptimizationOptions points, sweeps, iterations, target;
   points.points = 1;
   sweeps.sweeps = -1;
+  iterations.iterations = -1;
   target.target = 1.5;
   EXPECT_TRUE(bad_input(mp, {}, points));
   EXPECT_TRUE(bad_input(mp, {}, sweeps));
+  EXPECT_TRUE(bad_input(mp, {}, iterations));
   EXPECT_TRUE(bad_input(mp, {}, target));
   EXPECT_TRUE(bad_input(mp, {{0, 7}}, {}));
   EXPECT_TRUE(bad_input(mp, {{1, 1}}, {}));  // no patch 1

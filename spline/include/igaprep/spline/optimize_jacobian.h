@@ -4,18 +4,19 @@
 //
 // Where the decomposition's blocks meet T1 at narrow angles (docs/
 // decomposition.md, "Known limits") the fitted patches have scaled Jacobians
-// near 0.1 and below; the samples there cannot be fitted better. Here every
-// control point whose patches have a sampled scaled Jacobian below the target
-// in its support is moved, Gauss-Seidel, to raise the lowest one there: a
-// control point inside the model freely, one on T1 or a material interface
-// along that surface (through `slide`), so that the narrow corners of the
-// layout on those surfaces can open. A shared control point moves once for
-// all patches that hold it: interfaces stay conforming. A move is kept only
-// if the lowest scaled Jacobian in the point's support rises, so the model's
-// lowest one never falls. Then every patch with a moved control point is
-// sampled twice as densely; where that finds a point more than 0.1 below the
-// target (a fold between the first samples), the patch is optimized again on
-// the dense samples.
+// near 0.1 and below; the samples there cannot be fitted better. Here the
+// control points next to samples below the target move: first all at once,
+// by L-BFGS on a penalty of the samples below the target (joint_repair.h),
+// then, for what is left, Gauss-Seidel sweeps that move one control point
+// at a time to raise the lowest sample in its support (a move is kept only
+// if that minimum rises). A control point inside the model moves freely,
+// one on T1 or a material interface along that surface (through `slide`),
+// so that the narrow corners of the layout on those surfaces can open. A
+// shared control point moves once for all patches that hold it: interfaces
+// stay conforming. Then every patch with a moved control point is sampled
+// twice as densely; where that finds a point more than 0.1 below the target
+// (a fold between the first samples), both steps run again with those
+// patches on the dense samples.
 #include <functional>
 #include <string>
 #include <utility>
@@ -33,7 +34,8 @@ struct JacobianOptimizationOptions {
   // the case's target is 0). The check samples more densely (a 5-point grid
   // and the Gauss points per element): 0.35 here gave 0.29 there on ring2 and torus3.
   double target = 0.35;
-  int sweeps = 40;  // at most this many sweeps over the control points (0: measure only)
+  int iterations = 200;  // at most this many L-BFGS iterations of the joint optimization (0: sweeps only)
+  int sweeps = 40;       // then at most this many sweeps over the control points (0: none)
   int points = 5;   // sample points per element and direction, ends included (>= 2); 3 let folds through between them
 };
 
@@ -45,9 +47,11 @@ struct JacobianOptimizationResult {
   int moved_points = 0;                      // distinct control points that moved
   long long moves = 0;
   int sweeps = 0;                            // sweeps run (both passes)
+  int joint_variables = 0, joint_iterations = 0;  // the joint optimization's control points and iterations (both passes)
+  std::string joint_stop;                    // why its last pass stopped
   int dense_patches = 0;                     // patches optimized again on twice as dense samples
   double max_move = 0.0;                     // largest distance a control point moved
-  // Why the last pass stopped: "the target reached", "no control point can
+  // Why the last pass of sweeps stopped: "the target reached", "no control point can
   // move", "no progress in 10 sweeps" or "the sweep limit".
   std::string stop_reason;
 };

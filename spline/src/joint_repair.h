@@ -1,0 +1,34 @@
+#pragma once
+// The Jacobian repair as one optimization (optimize_jacobian.h): every
+// movable control point next to a low sample moves at once, by L-BFGS
+// (Ceres' GradientProblemSolver) on the penalty
+//   E = sum over samples s of max(0, target - q_s)^2,
+// q the check's scaled Jacobian. Not installed API.
+#include <string>
+#include <vector>
+
+#include "igaprep/spline/multipatch.h"
+#include "igaprep/spline/optimize_jacobian.h"
+#include "repair_common.h"
+
+namespace igaprep::spline::detail {
+
+struct JointRepairResult {
+  int variables = 0;   // control points optimized
+  int iterations = 0;  // L-BFGS iterations
+  double penalty_before = 0.0, penalty_after = 0.0;
+  std::string stop;    // why it stopped
+};
+
+// Inputs: the model, its global control points' copies and constraints
+// (repair_common.h), `slide` for the surfaces, the target, sample points per
+// element and direction of each patch, and at most `iterations` L-BFGS
+// iterations. Control points whose support holds a sample below
+// target + 0.1 move: free ones in space, sliding ones along their surface
+// (in the tangent plane found through `slide`, then put back by it), fixed
+// ones not. Sets moved[g] for each global control point that moved.
+JointRepairResult joint_repair(MultiPatch& mp, const std::vector<std::vector<Copy>>& copies,
+                               const std::vector<int>& cons, const SlideFn& slide, double target,
+                               const std::vector<int>& points, int iterations, std::vector<char>* moved);
+
+}  // namespace igaprep::spline::detail

@@ -27,6 +27,9 @@ constexpr double kMargin = 0.05;
 // distance to its nearest neighbour: without it a point can leave the model
 // (a fold is undone as well by a huge element).
 constexpr double kStay = 0.01;
+// The same for a point on T1 or a Ti, where a move also costs fidelity
+// (torus3: 0.01 gave fidelity 0.177 %, 0.1 0.159 %, 1.0 0.163 %).
+constexpr double kStaySurface = 0.1;
 
 // A control point that moves: x = x0 + h T y for a free one (T = I); for
 // one on a surface, T spans the surface's tangent plane at x0 and the point
@@ -46,6 +49,19 @@ struct PatchWork {
   std::vector<std::pair<int, int>> rows;  // (local control point, variable)
   std::vector<int> variable_of;           // per local control point, -1 if it stays
 };
+
+// A control point's move, in units of its neighbour distance, for the
+// unknowns y: y / sqrt(1 + |y|^2), shorter than one neighbour distance
+// whatever y is. Unbounded, points left the propeller by tens of mm where
+// the sum over thousands of folded samples outweighed the stay term (at
+// most 3 distances: 20 mm, volume +8 %; at most 1: -0.4 %).
+Eigen::VectorXd bounded_move(const Eigen::Ref<const Eigen::VectorXd>& y) { return y / std::sqrt(1.0 + y.squaredNorm()); }
+
+// d bounded_move / d y.
+Eigen::MatrixXd bounded_move_jacobian(const Eigen::Ref<const Eigen::VectorXd>& y) {
+  const double r = 1.0 + y.squaredNorm();
+  return (r * Eigen::MatrixXd::Identity(y.size(), y.size()) - y * y.transpose()) / (r * std::sqrt(r));
+}
 
 // d q / d J for q = det J / (|J0| |J1| |J2|), the scaled Jacobian.
 Eigen::Matrix3d scaled_jacobian_gradient(const Eigen::Matrix3d& J, double q) {
@@ -84,8 +100,10 @@ class Penalty : public ceres::FirstOrderFunction {
   // their tangent plane, which keeps E smooth (a closest-point projection
   // inside E broke the line search on ring2).
   Eigen::Vector3d position(const Variable& v, const double* y) const {
-    return v.x0 + v.h * v.T * Eigen::Map<const Eigen::VectorXd>(y + v.offset, v.T.cols());
+    return v.x0 + v.h * v.T * bounded_move(Eigen::Map<const Eigen::VectorXd>(y + v.offset, v.T.cols()));
   }
+  static double stay(const Variable& v) { return v.surface == kFree ? kStay : kStaySurface; }
+
   // Where it goes at the end: a sliding point put back on its surface.
   Eigen::Vector3d final_position(const Variable& v, const double* y) const {
     const Eigen::Vector3d x = position(v, y);
@@ -98,7 +116,7 @@ class Penalty : public ceres::FirstOrderFunction {
     for (std::size_t v = 0; v < vars_.size(); ++v) X[v] = position(vars_[v], y);
     std::vector<Eigen::Vector3d> gx(gradient ? vars_.size() : 0, Eigen::Vector3d::Zero());
     double sum = samples_penalty(X, gradient ? &gx : nullptr);
-    for (int i = 0; i < dof_; ++i) sum += kStay * y[i] * y[i];
+    for (const Variable& v : vars_) sum += stay(v) * Eigen::Map<const Eigen::VectorXd>(y + v.offset, v.T.cols()).squaredNorm();
     if (!std::isfinite(sum)) return false;
     last_y_.assign(y, y + dof_);
     *cost = sum;
@@ -106,7 +124,8 @@ class Penalty : public ceres::FirstOrderFunction {
       for (std::size_t v = 0; v < vars_.size(); ++v) {
         const Variable& var = vars_[v];
         const Eigen::Map<const Eigen::VectorXd> yv(y + var.offset, var.T.cols());
-        Eigen::Map<Eigen::VectorXd>(gradient + var.offset, var.T.cols()) = var.h * var.T.transpose() * gx[v] + 2.0 * kStay * yv;
+        Eigen::Map<Eigen::VectorXd>(gradient + var.offset, var.T.cols()) =
+            bounded_move_jacobian(yv).transpose() * (var.h * var.T.transpose() * gx[v]) + 2.0 * stay(var) * yv;
       }
     return true;
   }

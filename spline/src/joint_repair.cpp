@@ -31,9 +31,9 @@ constexpr double kStay = 0.01;
 // (torus3: 0.01 gave fidelity 0.177 %, 0.1 0.159 %, 1.0 0.163 %).
 constexpr double kStaySurface = 0.1;
 
-// A control point that moves: x = x0 + h T y for a free one (T = I); for
-// one on a surface, T spans the surface's tangent plane at x0 and the point
-// is put back on the surface by `slide`.
+// A control point that moves: x = x0 + h T bounded_move(y) for a free one
+// (T = I); for one on a surface, T spans the surface's tangent plane at x0
+// and the point is put back on the surface by `slide` at the end.
 struct Variable {
   int global = 0, surface = kFree;
   Eigen::Vector3d x0, on_surface;  // start; slide(x0, x0), so that y = 0 is x0 exactly

@@ -1,9 +1,10 @@
 #pragma once
 // The Jacobian repair as one optimization (optimize_jacobian.h): every
 // movable control point next to a low sample moves at once, by L-BFGS
-// (Ceres' GradientProblemSolver) on the penalty
-//   E = sum over samples s of max(0, target - q_s)^2,
-// q the check's scaled Jacobian. Not installed API.
+// (Ceres' GradientProblemSolver) on
+//   E = sum over samples s of max(0, target + 0.05 - q_s)^2 + sum over points of c |y|^2,
+// q the check's scaled Jacobian, each point moved by at most its neighbour
+// distance (docs/decomposition.md, section 6). Not installed API.
 #include <string>
 #include <vector>
 

@@ -51,7 +51,8 @@ spline::MultiPatch cylinder() {
   mp.labels = {"inner", "outer", "y0", "x0", "z0", "z1"};
   mp.boundaries = {{0, spline::kU0, 0}, {1, spline::kU1, 1}};
   for (int p = 0; p < 2; ++p)
-    for (int side = spline::kV0; side <= spline::kW1; ++side) mp.boundaries.push_back({p, side, side - 1});
+    for (const spline::Side side : {spline::kV0, spline::kV1, spline::kW0, spline::kW1})
+      mp.boundaries.push_back({p, side, side.index() - 1});
   return mp;
 }
 

@@ -40,10 +40,10 @@ spline::JacobianOptimizationResult raise_jacobians(const Case& c, const Decompos
   auto slide = [&](int surface, const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
     return surfaces.at(static_cast<std::size_t>(surface)).slide(from, to);
   };
-  std::vector<std::pair<int, int>> fixed;
+  std::vector<std::pair<int, spline::Side>> fixed;
   for (std::size_t p = 0; p < vp.blocks.size(); ++p)
-    for (int s = 0; s < 6; ++s)
-      if (vp.blocks[p].collapsed[static_cast<std::size_t>(s)]) fixed.emplace_back(static_cast<int>(p), s + 1);
+    for (const spline::Side side : spline::Side::all())
+      if (vp.blocks[p].collapsed[static_cast<std::size_t>(side.index() - 1)]) fixed.emplace_back(static_cast<int>(p), side);
   return spline::optimize_jacobians(mp, slide, fixed, c.jacobian);
 }
 

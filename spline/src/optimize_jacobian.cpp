@@ -266,7 +266,7 @@ class Optimizer {
 constexpr int kStallSweeps = 10;
 
 JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& slide,
-                                              const std::vector<std::pair<int, int>>& fixed_sides,
+                                              const std::vector<std::pair<int, Side>>& fixed_sides,
                                               const JacobianOptimizationOptions& options) {
   if (options.sweeps < 0 || options.iterations < 0 || options.points < 2 || !(options.target >= 0.0 && options.target <= 1.0))
     throw bad_input("optimize_jacobians: need sweeps >= 0, iterations >= 0, points >= 2 and a target in [0, 1]");

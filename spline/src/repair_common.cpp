@@ -24,7 +24,7 @@ std::vector<std::vector<Copy>> control_point_copies(const MultiPatch& mp, const 
 }
 
 std::vector<int> control_point_constraints(const MultiPatch& mp, const GlobalNumbering& num,
-                                           const std::vector<std::pair<int, int>>& fixed_sides, bool can_slide) {
+                                           const std::vector<std::pair<int, Side>>& fixed_sides, bool can_slide) {
   std::vector<int> cons(static_cast<std::size_t>(num.count), kFree);
   auto mark = [&](int patch, Side side, int surface) {
     if (patch < 0 || static_cast<std::size_t>(patch) >= mp.patches.size() || !side.valid())

@@ -36,7 +36,7 @@ std::vector<std::vector<Copy>> control_point_copies(const MultiPatch& mp, const 
 // boundary sides, interfaces on a surface), or kFixed (fixed sides, two
 // surfaces, or a surface without a slide function).
 std::vector<int> control_point_constraints(const MultiPatch& mp, const GlobalNumbering& num,
-                                           const std::vector<std::pair<int, int>>& fixed_sides, bool can_slide);
+                                           const std::vector<std::pair<int, Side>>& fixed_sides, bool can_slide);
 
 // Sample parameters of one direction: `points` per element, ends included,
 // each element boundary once.

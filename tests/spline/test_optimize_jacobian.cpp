@@ -256,7 +256,7 @@ TEST(OptimizeJacobian, JointAloneKeepsSharedFaceConforming) {
 
 // Bad options, rational patches and bad sides are bad input.
 TEST(OptimizeJacobian, BadInputThrows) {
-  auto bad_input = [](MultiPatch mp, const std::vector<std::pair<int, int>>& fixed, JacobianOptimizationOptions o) {
+  auto bad_input = [](MultiPatch mp, const std::vector<std::pair<int, Side>>& fixed, JacobianOptimizationOptions o) {
     try {
       optimize_jacobians(mp, nullptr, fixed, o);
     } catch (const igaprep::Error& e) {

@@ -25,6 +25,7 @@
 #include <Eigen/Core>
 
 #include "igaprep/spline/multipatch.h"
+#include "igaprep/spline/side.h"
 
 namespace igaprep::spline {
 
@@ -69,7 +70,7 @@ using SlideFn = std::function<Eigen::Vector3d(int surface, const Eigen::Vector3d
 // degenerate (degenerate_jacobian: collapsed sides; the check reports 0)
 // are left out, as no move can raise them.
 JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& slide,
-                                              const std::vector<std::pair<int, int>>& fixed_sides,
+                                              const std::vector<std::pair<int, Side>>& fixed_sides,
                                               const JacobianOptimizationOptions& options = {});
 
 }  // namespace igaprep::spline

@@ -169,9 +169,7 @@ class Penalty : public ceres::FirstOrderFunction {
     const int mu = pw.basis.size(0), mv = pw.basis.size(1);
     double sum = 0.0;
     for (Eigen::Index at = 0; at < ev.jacobians.rows(); ++at) {
-      Eigen::Matrix3d J;
-      for (int c = 0; c < 3; ++c)
-        for (int d = 0; d < 3; ++d) J(c, d) = ev.jacobians(at, 3 * c + d);
+      const Eigen::Matrix3d J = grid_jacobian(ev, at);
       const double q = repair_scaled(J);
       if (q < target_) ++*below;
       if (!(q < aim_)) continue;  // also a degenerate J: no move raises it
@@ -216,27 +214,17 @@ class Penalty : public ceres::FirstOrderFunction {
   int dof_;
 };
 
-std::array<std::vector<double>, 3> sample_grid(const Patch& p, int points) {
-  std::array<std::vector<double>, 3> params;
-  for (int d = 0; d < 3; ++d)
-    params[static_cast<std::size_t>(d)] = repair_sample_params(p.knots[static_cast<std::size_t>(d)], points);
-  return params;
-}
-
 // Global control points next to a sample below `below` that may move.
 std::vector<char> movable_near_low_samples(const MultiPatch& mp, const GlobalNumbering& num, const std::vector<int>& cons,
                                            const std::vector<int>& points, double below) {
   std::vector<char> out(static_cast<std::size_t>(num.count), 0);
   for (std::size_t pi = 0; pi < mp.patches.size(); ++pi) {
     const Patch& p = mp.patches[pi];
-    const GridBasis basis = grid_basis(p, sample_grid(p, points[pi]), 1);
+    const GridBasis basis = grid_basis(p, repair_sample_grid(p, points[pi]), 1);
     const GridEvaluation ev = evaluate_grid(p, basis);
     const int mu = basis.size(0), mv = basis.size(1);
     for (Eigen::Index at = 0; at < ev.jacobians.rows(); ++at) {
-      Eigen::Matrix3d J;
-      for (int c = 0; c < 3; ++c)
-        for (int d = 0; d < 3; ++d) J(c, d) = ev.jacobians(at, 3 * c + d);
-      if (!(repair_scaled(J) < below)) continue;
+      if (!(repair_scaled(grid_jacobian(ev, at)) < below)) continue;
       const std::array<int, 3> ijk{{static_cast<int>(at % mu), static_cast<int>((at / mu) % mv), static_cast<int>(at / (mu * mv))}};
       std::array<int, 3> first;
       for (int d = 0; d < 3; ++d)
@@ -310,7 +298,7 @@ std::vector<PatchWork> make_work(const MultiPatch& mp, const std::vector<std::ve
   for (std::size_t pi = 0; pi < mp.patches.size(); ++pi) {
     const int w = work_of[pi];
     if (w < 0) continue;
-    std::array<std::vector<double>, 3> params = sample_grid(mp.patches[pi], points[pi]);
+    std::array<std::vector<double>, 3> params = repair_sample_grid(mp.patches[pi], points[pi]);
     for (int d = 0; d < 3; ++d) {
       const auto& r = range[static_cast<std::size_t>(w)][static_cast<std::size_t>(d)];
       auto& t = params[static_cast<std::size_t>(d)];
@@ -373,11 +361,11 @@ std::string stop_reason(const ceres::GradientProblemSolver::Summary& s, const St
 
 }  // namespace
 
-JointRepairResult joint_repair(MultiPatch& mp, const std::vector<std::vector<Copy>>& copies, const std::vector<int>& cons,
+JointRepairResult joint_repair(MultiPatch& mp, const GlobalNumbering& num, const std::vector<std::vector<Copy>>& copies,
+                               const std::vector<int>& cons,
                                const SlideFn& slide, double target, const std::vector<int>& points, int iterations,
                                std::vector<char>* moved) {
   JointRepairResult out;
-  const GlobalNumbering num = global_numbering(mp);
   std::vector<Variable> vars =
       make_variables(mp, copies, cons, movable_near_low_samples(mp, num, cons, points, std::min(1.0, target + kReach)), slide);
   if (vars.empty()) {
@@ -390,7 +378,8 @@ JointRepairResult joint_repair(MultiPatch& mp, const std::vector<std::vector<Cop
   auto* penalty = new Penalty(std::move(vars), std::move(work), slide, target, dof);
   ceres::GradientProblem problem(penalty);  // owns penalty
   std::vector<double> y(static_cast<std::size_t>(dof), 0.0);
-  penalty->Evaluate(y.data(), &out.penalty_before, nullptr);
+  double cost;
+  penalty->Evaluate(y.data(), &cost, nullptr);
   if (penalty->below_at(y.data()) == 0) {
     out.stop = "the target reached";
     return out;
@@ -409,7 +398,6 @@ JointRepairResult joint_repair(MultiPatch& mp, const std::vector<std::vector<Cop
     ceres::Solve(options, problem, y.data(), &summary);
   }
   out.iterations = static_cast<int>(summary.iterations.size()) - 1;
-  out.penalty_after = summary.final_cost;
   out.stop = stop_reason(summary, stop);
   for (const Variable& v : penalty->variables()) {
     if (std::all_of(y.begin() + v.offset, y.begin() + v.offset + v.T.cols(), [](double t) { return t == 0.0; })) continue;

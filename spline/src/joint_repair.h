@@ -17,18 +17,17 @@ namespace igaprep::spline::detail {
 struct JointRepairResult {
   int variables = 0;   // control points optimized
   int iterations = 0;  // L-BFGS iterations
-  double penalty_before = 0.0, penalty_after = 0.0;
   std::string stop;    // why it stopped
 };
 
-// Inputs: the model, its global control points' copies and constraints
-// (repair_common.h), `slide` for the surfaces, the target, sample points per
+// Inputs: the model, its global numbering (global_numbering), its global
+// control points' copies and constraints (repair_common.h), `slide` for the surfaces, the target, sample points per
 // element and direction of each patch, and at most `iterations` L-BFGS
 // iterations. Control points whose support holds a sample below
 // target + 0.1 move: free ones in space, sliding ones along their surface
 // (in the tangent plane found through `slide`, then put back by it), fixed
 // ones not. Sets moved[g] for each global control point that moved.
-JointRepairResult joint_repair(MultiPatch& mp, const std::vector<std::vector<Copy>>& copies,
+JointRepairResult joint_repair(MultiPatch& mp, const GlobalNumbering& num, const std::vector<std::vector<Copy>>& copies,
                                const std::vector<int>& cons, const SlideFn& slide, double target,
                                const std::vector<int>& points, int iterations, std::vector<char>* moved);
 

@@ -48,17 +48,14 @@ struct PatchSamples {
 std::vector<Eigen::Matrix3d> grid_jacobians(const Patch& p, const std::array<std::vector<double>, 3>& params) {
   const GridEvaluation ev = evaluate_grid(p, params, 1);
   std::vector<Eigen::Matrix3d> J(static_cast<std::size_t>(ev.jacobians.rows()));
-  for (Eigen::Index at = 0; at < ev.jacobians.rows(); ++at)
-    for (int c = 0; c < 3; ++c)
-      for (int d = 0; d < 3; ++d) J[static_cast<std::size_t>(at)](c, d) = ev.jacobians(at, 3 * c + d);
+  for (Eigen::Index at = 0; at < ev.jacobians.rows(); ++at) J[static_cast<std::size_t>(at)] = detail::grid_jacobian(ev, at);
   return J;
 }
 
 PatchSamples sample_patch(const Patch& p, int points) {
   PatchSamples s;
-  std::array<std::vector<double>, 3> params;
+  const std::array<std::vector<double>, 3> params = detail::repair_sample_grid(p, points);
   for (int d = 0; d < 3; ++d) {
-    params[static_cast<std::size_t>(d)] = detail::repair_sample_params(p.knots[static_cast<std::size_t>(d)], points);
     const int deg = p.degrees[static_cast<std::size_t>(d)];
     const BasisTable tab = basis_table(p.knots[static_cast<std::size_t>(d)], deg, params[static_cast<std::size_t>(d)], 1);
     s.n[static_cast<std::size_t>(d)] = tab.size();
@@ -80,10 +77,8 @@ PatchSamples sample_patch(const Patch& p, int points) {
 
 // The lowest scaled Jacobian of a patch sampled with `points` per element and direction.
 double patch_min_at(const Patch& p, int points) {
-  std::array<std::vector<double>, 3> params;
-  for (int d = 0; d < 3; ++d) params[static_cast<std::size_t>(d)] = detail::repair_sample_params(p.knots[static_cast<std::size_t>(d)], points);
   double lo = std::numeric_limits<double>::infinity();
-  for (const Eigen::Matrix3d& J : grid_jacobians(p, params)) lo = std::min(lo, repair_scaled(J));
+  for (const Eigen::Matrix3d& J : grid_jacobians(p, detail::repair_sample_grid(p, points))) lo = std::min(lo, repair_scaled(J));
   return lo;
 }
 
@@ -329,7 +324,7 @@ JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& sli
   auto repair = [&](const std::vector<int>& points) {
     if (options.iterations > 0) {
       const detail::JointRepairResult j =
-          detail::joint_repair(mp, copies, cons, slide, options.target, points, options.iterations, &moved);
+          detail::joint_repair(mp, num, copies, cons, slide, options.target, points, options.iterations, &moved);
       out.joint_variables += j.variables;
       out.joint_iterations += j.iterations;
       out.joint_stop = j.stop;

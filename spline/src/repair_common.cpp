@@ -54,6 +54,12 @@ std::vector<double> repair_sample_params(const std::vector<double>& knots, int p
   return params;
 }
 
+std::array<std::vector<double>, 3> repair_sample_grid(const Patch& p, int points) {
+  std::array<std::vector<double>, 3> params;
+  for (std::size_t d = 0; d < 3; ++d) params[d] = repair_sample_params(p.knots[d], points);
+  return params;
+}
+
 double nearest_neighbour(const MultiPatch& mp, const std::vector<Copy>& copies, const Eigen::Vector3d& x) {
   double edge = std::numeric_limits<double>::infinity();
   for (const Copy& c : copies) {

@@ -2,12 +2,14 @@
 // What the two Jacobian repairs (optimize_jacobian.cpp's sweeps and
 // joint_repair.cpp's one optimization) share: which control points may move
 // and how, and where they sample the scaled Jacobian. Not installed API.
+#include <array>
 #include <limits>
 #include <utility>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "igaprep/spline/evaluate.h"
 #include "igaprep/spline/multipatch.h"
 #include "igaprep/spline/multipatch_topology.h"
 #include "igaprep/spline/scaled_jacobian.h"
@@ -41,6 +43,16 @@ std::vector<int> control_point_constraints(const MultiPatch& mp, const GlobalNum
 // Sample parameters of one direction: `points` per element, ends included,
 // each element boundary once.
 std::vector<double> repair_sample_params(const std::vector<double>& knots, int points);
+// The same in each direction of a patch: its tensor grid of samples.
+std::array<std::vector<double>, 3> repair_sample_grid(const Patch& p, int points);
+
+// The Jacobian at grid point `at` of an evaluate_grid result (J(c, d) = d x_c / d u_d).
+inline Eigen::Matrix3d grid_jacobian(const GridEvaluation& ev, Eigen::Index at) {
+  Eigen::Matrix3d J;
+  for (int c = 0; c < 3; ++c)
+    for (int d = 0; d < 3; ++d) J(c, d) = ev.jacobians(at, 3 * c + d);
+  return J;
+}
 
 // Distance from x to the nearest distinct neighbouring control point in any copy's grid
 // (+infinity when every neighbour coincides with x).

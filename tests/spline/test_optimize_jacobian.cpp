@@ -88,6 +88,26 @@ Patch skewed_bottom(double d = 0.42) {
   return P;
 }
 
+// Two boxes side by side whose shared face is pushed inward at one control
+// point; the outer sides are labelled (and fixed, without a slide function).
+MultiPatch two_boxes_with_a_distorted_shared_face() {
+  MultiPatch mp = model({box(0.0, 0.5), box(0.5, 1.0)});
+  const Eigen::RowVector3d D = 0.17 * Eigen::RowVector3d(0, 1, -1);
+  mp.patches[0].control_points.row(mp.patches[0].index(5, 1, 1)) += D;
+  mp.patches[1].control_points.row(mp.patches[1].index(0, 1, 1)) += D;
+  find_interfaces(mp, 1e-9);
+  for (const Side side : Side::all()) {
+    if (side != kU1) mp.boundaries.push_back({0, side, 0});
+    if (side != kU0) mp.boundaries.push_back({1, side, 0});
+  }
+  return mp;
+}
+
+// Surface 0 is a plane z = const: a point slides in it; other surfaces hold their points.
+Eigen::Vector3d slide_on_plane_z(int surface, const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
+  return surface == 0 ? Eigen::Vector3d(to.x(), to.y(), from.z()) : from;
+}
+
 // An interior control point moves until the sampled minimum reaches the target; labelled sides stay.
 TEST(OptimizeJacobian, RaisesSkewedInterior) {
   MultiPatch mp = model({skewed_cube()});
@@ -112,10 +132,7 @@ TEST(OptimizeJacobian, SlidesOnLabelledSide) {
   MultiPatch mp = model({skewed_bottom()});
   for (const Side side : Side::all()) mp.boundaries.push_back({0, side, side == kW0 ? 0 : 1});
   const Patch before = mp.patches[0];
-  const SlideFn slide = [](int surface, const Eigen::Vector3d& from, const Eigen::Vector3d& to) -> Eigen::Vector3d {
-    return surface == 0 ? Eigen::Vector3d(to.x(), to.y(), from.z()) : from;
-  };
-  const JacobianOptimizationResult r = optimize_jacobians(mp, slide, {});
+  const JacobianOptimizationResult r = optimize_jacobians(mp, slide_on_plane_z, {});
   EXPECT_LT(r.min_before, 0.2);
   EXPECT_GE(r.min_after, 0.35 - 1e-9);
   const Patch& after = mp.patches[0];
@@ -133,16 +150,8 @@ TEST(OptimizeJacobian, SlidesOnLabelledSide) {
 
 // A distorted shared face moves as one: the interface stays conforming (outer sides labelled, fixed).
 TEST(OptimizeJacobian, SharedFaceStaysConforming) {
-  MultiPatch mp = model({box(0.0, 0.5), box(0.5, 1.0)});
-  const Eigen::RowVector3d D = 0.17 * Eigen::RowVector3d(0, 1, -1);
-  mp.patches[0].control_points.row(mp.patches[0].index(5, 1, 1)) += D;
-  mp.patches[1].control_points.row(mp.patches[1].index(0, 1, 1)) += D;
-  find_interfaces(mp, 1e-9);
+  MultiPatch mp = two_boxes_with_a_distorted_shared_face();
   ASSERT_EQ(mp.interfaces.size(), 1u);
-  for (const Side side : Side::all()) {
-    if (side != kU1) mp.boundaries.push_back({0, side, 0});
-    if (side != kU0) mp.boundaries.push_back({1, side, 0});
-  }
   const MultiPatch before = mp;
   const JacobianOptimizationResult r = optimize_jacobians(mp, nullptr, {});
   EXPECT_LT(r.min_before, 0.2);
@@ -221,10 +230,7 @@ TEST(OptimizeJacobian, JointAloneSlidesOnLabelledSide) {
   MultiPatch mp = model({skewed_bottom()});
   for (const Side side : Side::all()) mp.boundaries.push_back({0, side, side == kW0 ? 0 : 1});
   const Patch before = mp.patches[0];
-  const SlideFn slide = [](int surface, const Eigen::Vector3d& from, const Eigen::Vector3d& to) -> Eigen::Vector3d {
-    return surface == 0 ? Eigen::Vector3d(to.x(), to.y(), from.z()) : from;
-  };
-  const JacobianOptimizationResult r = optimize_jacobians(mp, slide, {}, joint_only());
+  const JacobianOptimizationResult r = optimize_jacobians(mp, slide_on_plane_z, {}, joint_only());
   EXPECT_EQ(r.joint_stop, "the target reached");
   EXPECT_GE(r.min_after, 0.35);
   int slid = 0;
@@ -238,15 +244,7 @@ TEST(OptimizeJacobian, JointAloneSlidesOnLabelledSide) {
 }
 
 TEST(OptimizeJacobian, JointAloneKeepsSharedFaceConforming) {
-  MultiPatch mp = model({box(0.0, 0.5), box(0.5, 1.0)});
-  const Eigen::RowVector3d D = 0.17 * Eigen::RowVector3d(0, 1, -1);
-  mp.patches[0].control_points.row(mp.patches[0].index(5, 1, 1)) += D;
-  mp.patches[1].control_points.row(mp.patches[1].index(0, 1, 1)) += D;
-  find_interfaces(mp, 1e-9);
-  for (const Side side : Side::all()) {
-    if (side != kU1) mp.boundaries.push_back({0, side, 0});
-    if (side != kU0) mp.boundaries.push_back({1, side, 0});
-  }
+  MultiPatch mp = two_boxes_with_a_distorted_shared_face();
   const JacobianOptimizationResult r = optimize_jacobians(mp, nullptr, {}, joint_only());
   EXPECT_LT(r.min_before, 0.2);
   EXPECT_GE(r.min_after, 0.35);

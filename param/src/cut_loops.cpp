@@ -333,7 +333,7 @@ CutLoops cut_by_loops(const mesh::TriMesh& T1, const std::vector<std::vector<int
   if (loops.empty()) throw bad_input(name + ": no cut loops given");
   const auto ef = edge_faces(T1.F);
   std::set<std::uint64_t> loop_edges;
-  std::set<int> seen;
+  std::map<int, std::size_t> loop_of;  // vertex -> the loop that passed it
   for (std::size_t l = 0; l < loops.size(); ++l) {
     const auto& loop = loops[l];
     const std::string where = name + ": cut loop " + std::to_string(l);
@@ -343,9 +343,14 @@ CutLoops cut_by_loops(const mesh::TriMesh& T1, const std::vector<std::vector<int
       if (a < 0 || a >= T1.V.rows())
         throw bad_input(where + ": vertex index " + std::to_string(a) + " is out of range (the surface has " +
                         std::to_string(T1.V.rows()) + " vertices)");
-      if (!seen.insert(a).second)
-        throw bad_input(where + " is not simple: vertex " + std::to_string(a) +
-                        " appears twice (loops may not repeat a vertex or touch each other)");
+      if (const auto [it, first] = loop_of.emplace(a, l); !first) {
+        std::ostringstream at;
+        at << "vertex " << a << " (" << T1.V.row(a) << ")";
+        throw bad_input(it->second == l ? where + " is not simple: it passes " + at.str() + " twice"
+                                        : name + ": cut loops " + std::to_string(it->second) + " and " +
+                                              std::to_string(l) + " touch at " + at.str() +
+                                              " (loops may not cross or touch: move them apart there)");
+      }
       if (b < 0 || b >= T1.V.rows() || !ef.count(edge_key(a, b)))
         throw bad_input(where + ": vertices " + std::to_string(a) + " and " + std::to_string(b) +
                         " are not joined by an edge of the surface (a loop is a closed path along edges)");

@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <map>
+#include <sstream>
 #include <set>
 
 #include "igaprep/core/error.h"
@@ -141,7 +142,13 @@ TEST(CutLoops, WrongCutsAreRefusedWithTheirReason) {
   const std::vector<int> once = bad;
   bad.insert(bad.end(), once.begin(), once.end());  // around twice
   msg = error_of([&] { cut_by_loops(T1, {bad}, "ring2 outer"); });
-  EXPECT_NE(msg.find("not simple"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("cut loop 0 is not simple: it passes vertex " + std::to_string(once[0]) + " ("),
+            std::string::npos) << msg;
+  // Two loops through one vertex (the same loop twice): they touch, and where.
+  msg = error_of([&] { cut_by_loops(T1, {once, once}, "ring2 outer"); });
+  std::ostringstream where;
+  where << "vertex " << once[0] << " (" << T1.V.row(once[0]) << ")";
+  EXPECT_NE(msg.find("cut loops 0 and 1 touch at " + where.str()), std::string::npos) << msg;
   msg = error_of([&] { cut_by_loops(T1, {{0, 1000, 2000}}, "ring2 outer"); });
   EXPECT_NE(msg.find("not joined by an edge"), std::string::npos) << msg;
   // One loop on the genus-1 surface: too few.

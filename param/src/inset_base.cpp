@@ -132,8 +132,12 @@ int collapse_short_edges(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, const std::v
     if (dead[f]) continue;
     for (int k = 0; k < 3 && !dead[f]; ++k) {
       int keep = sheet.F(f, k), drop = sheet.F(f, (k + 1) % 3);
-      if ((sheet.V.row(keep) - sheet.V.row(drop)).norm() >= min_length) continue;
-      if (pinned[drop] && pinned[keep]) continue;
+      // An edge of no length in (u, v) (two cut points that the line put at
+      // one place, where the map is nearly degenerate) goes whatever its 3D
+      // length and pins: its triangles have no area in (u, v).
+      const bool same_uv = (uv.row(keep) - uv.row(drop)).norm() <= 1e-12 * (1.0 + uv.row(keep).norm());
+      if (!same_uv && (sheet.V.row(keep) - sheet.V.row(drop)).norm() >= min_length) continue;
+      if (!same_uv && pinned[drop] && pinned[keep]) continue;
       if (pinned[drop]) std::swap(keep, drop);
       // Moving `drop` onto `keep` must not fold any surviving triangle in (u, v).
       bool ok = true;

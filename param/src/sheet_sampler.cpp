@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 
+#include <sstream>
 #include <vector>
 
 #include "igaprep/core/error.h"
@@ -23,9 +24,12 @@ SheetSampler::SheetSampler(const mesh::TriMesh& sheet, const Eigen::MatrixXd& uv
     const Eigen::Vector3d e1 = V.row(b) - V.row(a), e2 = V.row(c) - V.row(a);
     const Eigen::Vector2d t1 = uv.row(b) - uv.row(a), t2 = uv.row(c) - uv.row(a);
     const double det = t1.x() * t2.y() - t1.y() * t2.x();
-    if (!(det > 0.0))
-      throw bad_input("sheet sampler: (u, v) triangle " + std::to_string(f) + " is not positively oriented (det " +
-                      std::to_string(det) + ")");
+    if (!(det > 0.0)) {
+      std::ostringstream why;
+      why << "sheet sampler: (u, v) triangle " << f << " is not positively oriented (det " << det << ", corners ("
+          << uv.row(a) << "), (" << uv.row(b) << "), (" << uv.row(c) << "))";
+      throw bad_input(why.str());
+    }
     // [e1 e2] = [Xu Xv] [t1 t2]  =>  [Xu Xv] = [e1 e2] [t1 t2]^-1
     const Eigen::Vector3d Xu = (e1 * t2.y() - e2 * t1.y()) / det;
     const Eigen::Vector3d Xv = (-e1 * t2.x() + e2 * t1.x()) / det;

@@ -223,6 +223,26 @@ TEST(CollapseShortEdges, OneShortEdgeOnAGrid) {
   }
 }
 
+// Two pinned vertices at one (u, v) (cut points that a line put at one place
+// where the map is nearly degenerate), 0.3 h apart in 3D with the threshold
+// below that: their edge still goes, else its triangles have no (u, v) area.
+TEST(CollapseShortEdges, AnEdgeOfNoLengthInUVGoesEvenBetweenPins) {
+  const int n = 6;
+  const double h = 1.0 / n;
+  auto id = [&](int i, int j) { return i + (n + 1) * j; };
+  mesh::TriMesh m = param_test::square_tris(n);
+  const int P = id(2, 2), Q = id(3, 2);
+  Eigen::MatrixXd uv = m.V.leftCols(2);
+  uv.row(P) = uv.row(Q);           // P's (u, v) on Q's, P's 3D where it was
+  m.V(P, 0) = m.V(Q, 0) - 0.3 * h;  // and 0.3 h from Q in 3D
+  ASSERT_EQ(min_uv_area(m, uv), 0.0);
+  std::vector<char> pin(static_cast<std::size_t>(m.V.rows()), 0);
+  pin[static_cast<std::size_t>(P)] = pin[static_cast<std::size_t>(Q)] = 1;
+  EXPECT_EQ(collapse_short_edges(m, uv, pin, 0.1 * h), 1);
+  EXPECT_GT(min_uv_area(m, uv), 0.0);
+  EXPECT_EQ(describe_sheet_problem(analyze_sheet(m.F, m.V.rows()), 1, "collapsed grid"), "");
+}
+
 TEST(SmoothSheet, FlattensBumpsKeepsFixedAndPlanar) {
   mesh::TriMesh flat = param_test::square_tris(8, 0.2, 4);
   std::vector<char> fixed(static_cast<std::size_t>(flat.V.rows()), 0);

@@ -44,7 +44,9 @@ double narrowest_band(const RectilinearDomain& domain);
 
 // Collapses every edge shorter than min_length (3D) whose triangles stay
 // positively oriented in (u, v) after moving one end onto the other; a
-// pinned vertex is never moved. Returns the number of edges collapsed.
+// pinned vertex is never moved, except onto a vertex at the same (u, v):
+// an edge of no length in (u, v) is collapsed whatever its 3D length.
+// Returns the number of edges collapsed.
 int collapse_short_edges(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, const std::vector<char>& pinned, double min_length);
 
 // Inputs: M0trim with its 2D polycube, `inset` in (0, 1): d = inset x half the

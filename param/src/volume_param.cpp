@@ -62,25 +62,21 @@ int count_folded(const SampledBlock& b, int m) {
   return folded;
 }
 
-// Reverses the first direction when the grid's finite-difference Jacobian at
-// its centre is negative; counts the cells whose corner tets are not positive.
+// Reverses the first direction when most of the block's sample cells are
+// folded (their corner tets not positive), then counts the folded ones. The
+// majority, not the cells at the centre: a fold through the centre turned a
+// whole block inside out (a pelvis shell block: 3,639 of 4,096 cells).
 void orient_block(SampledBlock& b, int m) {
-  auto at = [&](int i, int j, int k) -> Eigen::Vector3d { return b.samples.row(i + m * (j + m * k)).transpose(); };
-  const int c = m / 2;
-  Eigen::Matrix3d J;
-  J.col(0) = at(c + 1, c, c) - at(c - 1, c, c);
-  J.col(1) = at(c, c + 1, c) - at(c, c - 1, c);
-  J.col(2) = at(c, c, c + 1) - at(c, c, c - 1);
-  if (J.determinant() < 0.0) {
-    Eigen::MatrixXd s = b.samples;
-    for (int k = 0; k < m; ++k)
-      for (int j = 0; j < m; ++j)
-        for (int i = 0; i < m; ++i) s.row(i + m * (j + m * k)) = b.samples.row((m - 1 - i) + m * (j + m * k));
-    b.samples = s;
-    b.mirrored = true;
-    std::swap(b.side_label[0], b.side_label[1]);
-    std::swap(b.collapsed[0], b.collapsed[1]);
-  }
+  b.folded = count_folded(b, m);
+  if (2 * b.folded <= (m - 1) * (m - 1) * (m - 1)) return;
+  Eigen::MatrixXd s = b.samples;
+  for (int k = 0; k < m; ++k)
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i) s.row(i + m * (j + m * k)) = b.samples.row((m - 1 - i) + m * (j + m * k));
+  b.samples = s;
+  b.mirrored = true;
+  std::swap(b.side_label[0], b.side_label[1]);
+  std::swap(b.collapsed[0], b.collapsed[1]);
   b.folded = count_folded(b, m);
 }
 

@@ -2,13 +2,15 @@
 """Pictures of one `igaprep run` output folder, rendered off screen with VTK.
 
 Usage (Debian: python3-vtk9 and xvfb, both installed by scripts/setup.sh):
-    xvfb-run -a /usr/bin/python3 scripts/render_run.py OUTPUT_DIR PREFIX
+    xvfb-run -a /usr/bin/python3 scripts/render_run.py OUTPUT_DIR PREFIX [VIEWS]
 
 OUTPUT_DIR is a run's output written with `--keep-intermediate` and the
 case's export "vtu" (model.vtu). Writes PREFIX_sides.png (T1 coloured by
 cut region, with the cut loops), PREFIX_midsurface.png (M0trim coloured by
-u) and PREFIX_patches.png (the model coloured by patch, T1 translucent),
-each from above and from an oblique view.
+u), PREFIX_patches.png (the model coloured by patch, T1 translucent) and,
+for a model of more than one material, PREFIX_materials.png, each from
+above and from an oblique view, or from the directions VIEWS gives
+("x,y,z;x,y,z;...", the camera's direction from the model's centre).
 """
 import os
 import sys
@@ -81,20 +83,32 @@ def render(actors, path, views=((0, 0, 1), (1, -1, 0.6))):
     writer.Write()
 
 
+def parse_views(text):
+    views = [tuple(float(x) for x in view.split(",")) for view in text.split(";")]
+    if any(len(v) != 3 or not any(v) for v in views):
+        sys.exit("VIEWS: directions x,y,z (not all zero) separated by ';', got " + text)
+    return tuple(views)
+
+
 def main():
-    if len(sys.argv) != 3:
+    if len(sys.argv) not in (3, 4):
         sys.exit(__doc__)
     folder, prefix = sys.argv[1], sys.argv[2]
+    views = parse_views(sys.argv[3]) if len(sys.argv) == 4 else ((0, 0, 1), (1, -1, 0.6))
     regions = os.path.join(folder, "midsurface_t1_regions.vtu")
     loops = os.path.join(folder, "midsurface_loops.vtu")
     if os.path.exists(regions):
         render([actor(read(regions), "region"), actor(read(loops), colour=(0, 0, 0), line_width=3)],
-               prefix + "_sides.png")
-        render([actor(read(os.path.join(folder, "midsurface_m0trim.vtu")), "u")], prefix + "_midsurface.png")
+               prefix + "_sides.png", views)
+        render([actor(read(os.path.join(folder, "midsurface_m0trim.vtu")), "u")], prefix + "_midsurface.png", views)
     model = os.path.join(folder, "model.vtu")
     if os.path.exists(model):
         shell = [actor(read(regions), opacity=0.25)] if os.path.exists(regions) else []
-        render([actor(read(model), "patch")] + shell, prefix + "_patches.png")
+        data = read(model)
+        render([actor(data, "patch")] + shell, prefix + "_patches.png", views)
+        materials = data.GetCellData().GetArray("material")
+        if materials is not None and materials.GetRange()[1] > materials.GetRange()[0]:
+            render([actor(data, "material")], prefix + "_materials.png", views)
 
 
 if __name__ == "__main__":

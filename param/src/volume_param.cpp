@@ -62,24 +62,6 @@ int count_folded(const SampledBlock& b, int m) {
   return folded;
 }
 
-// Reverses the first direction when most of the block's sample cells are
-// folded (their corner tets not positive), then counts the folded ones. The
-// majority, not the cells at the centre: a fold through the centre turned a
-// whole block inside out (a pelvis shell block: 3,639 of 4,096 cells).
-void orient_block(SampledBlock& b, int m) {
-  b.folded = count_folded(b, m);
-  if (2 * b.folded <= (m - 1) * (m - 1) * (m - 1)) return;
-  Eigen::MatrixXd s = b.samples;
-  for (int k = 0; k < m; ++k)
-    for (int j = 0; j < m; ++j)
-      for (int i = 0; i < m; ++i) s.row(i + m * (j + m * k)) = b.samples.row((m - 1 - i) + m * (j + m * k));
-  b.samples = s;
-  b.mirrored = true;
-  std::swap(b.side_label[0], b.side_label[1]);
-  std::swap(b.collapsed[0], b.collapsed[1]);
-  b.folded = count_folded(b, m);
-}
-
 // Fills the rows j of a shell block (samples i + m j + m^2 k) that were not
 // traced by linear interpolation across j between the traced rows 0, mid
 // (if mid >= 0) and m - 1, at every i and k.
@@ -523,6 +505,22 @@ void add_shell_blocks(VolumeContext& ctx, const DecompositionMesh& H, const std:
 }
 
 }  // namespace
+
+// The majority, not the cells at the centre: a fold through the centre
+// turned a whole block inside out (a pelvis shell block: 3,639 of 4,096 cells).
+void orient_block(SampledBlock& b, int m) {
+  b.folded = count_folded(b, m);
+  if (2 * b.folded <= (m - 1) * (m - 1) * (m - 1)) return;
+  Eigen::MatrixXd s = b.samples;
+  for (int k = 0; k < m; ++k)
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i) s.row(i + m * (j + m * k)) = b.samples.row((m - 1 - i) + m * (j + m * k));
+  b.samples = s;
+  b.mirrored = true;
+  std::swap(b.side_label[0], b.side_label[1]);
+  std::swap(b.collapsed[0], b.collapsed[1]);
+  b.folded = count_folded(b, m);
+}
 
 VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, const BaseLayout& layout,
                                const std::vector<double>& params, const VolumeParamOptions& options) {

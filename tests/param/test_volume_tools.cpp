@@ -916,3 +916,49 @@ TEST(BuildVolumeParam, OptionValidation) {
 }
 
 }  // namespace
+
+// ---------------------------------------------------------------- orient_block
+
+namespace {
+
+// m^3 samples of the unit cube, first direction fastest; `flip_i` lists the
+// pairs of i-columns exchanged (every j, k).
+SampledBlock cube_block(int m, const std::vector<std::pair<int, int>>& flip_i = {}) {
+  SampledBlock b;
+  b.samples.resize(m * m * m, 3);
+  for (int k = 0; k < m; ++k)
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i) b.samples.row(i + m * (j + m * k)) = Eigen::RowVector3d(i, j, k) / (m - 1.0);
+  for (const auto& [a, c] : flip_i)
+    for (int k = 0; k < m; ++k)
+      for (int j = 0; j < m; ++j) b.samples.row(a + m * (j + m * k)).swap(b.samples.row(c + m * (j + m * k)));
+  return b;
+}
+
+}  // namespace
+
+TEST(OrientBlock, AnInsideOutBlockIsMirroredAndAFoldAtItsCentreIsNot) {
+  const int m = 7, cells = (m - 1) * (m - 1) * (m - 1);
+  {  // The cube with its first direction reversed: every cell folded until mirrored.
+    SampledBlock b = cube_block(m, {{0, 6}, {1, 5}, {2, 4}});
+    b.side_label = {0, -1, -1, -1, -1, -1};
+    orient_block(b, m);
+    EXPECT_TRUE(b.mirrored);
+    EXPECT_EQ(b.folded, 0);
+    EXPECT_EQ(b.side_label[1], 0);  // the side moved with the direction
+  }
+  {  // Columns 2 and 4 exchanged: the cells i = 2 and 3 of every row fold (2
+     // of 6). The centre's difference at(4) - at(2) is reversed, which used to
+     // mirror the whole block: then 4 of 6 folded.
+    SampledBlock b = cube_block(m, {{2, 4}});
+    orient_block(b, m);
+    EXPECT_FALSE(b.mirrored);
+    EXPECT_EQ(b.folded, cells / 3);
+  }
+  {  // A regular block is left alone.
+    SampledBlock b = cube_block(m);
+    orient_block(b, m);
+    EXPECT_FALSE(b.mirrored);
+    EXPECT_EQ(b.folded, 0);
+  }
+}

@@ -75,6 +75,12 @@ struct SampledBlock {
   int folded = 0;         // sample-grid cells with a non-positive corner volume
 };
 
+// Reverses a block's first direction when more than half its sample cells
+// are folded (a corner tet not positive): `mirrored`, the first two sides'
+// labels and collapse flags swapped. Sets `folded` either way. m: samples
+// per direction.
+void orient_block(SampledBlock& block, int m);
+
 struct VolumeParam {
   std::vector<double> params;  // sample parameters in each direction (ascending, 0 and 1 included)
   std::vector<SampledBlock> blocks;

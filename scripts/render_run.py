@@ -51,7 +51,11 @@ def actor(data, array=None, colour=(0.75, 0.75, 0.75), opacity=1.0, line_width=1
     return a
 
 
-def render(actors, path, views=((0, 0, 1), (1, -1, 0.6))):
+# From above and from an oblique view, when no VIEWS are given.
+DEFAULT_VIEWS = ((0, 0, 1), (1, -1, 0.6))
+
+
+def render(actors, path, views=DEFAULT_VIEWS):
     renderer = vtk.vtkRenderer()
     renderer.SetBackground(1, 1, 1)
     for a in actors:
@@ -94,7 +98,7 @@ def main():
     if len(sys.argv) not in (3, 4):
         sys.exit(__doc__)
     folder, prefix = sys.argv[1], sys.argv[2]
-    views = parse_views(sys.argv[3]) if len(sys.argv) == 4 else ((0, 0, 1), (1, -1, 0.6))
+    views = parse_views(sys.argv[3]) if len(sys.argv) == 4 else DEFAULT_VIEWS
     regions = os.path.join(folder, "midsurface_t1_regions.vtu")
     loops = os.path.join(folder, "midsurface_loops.vtu")
     if os.path.exists(regions):

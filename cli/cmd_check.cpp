@@ -1,7 +1,8 @@
 // igaprep check MODEL.h5 [--case CASE.json | --surface FILE ...] --report DIR
-// [--allow-degenerate]: certified Jacobian, quality, fidelity and topology of
-// a model; writes DIR/report.json and DIR/report.html (docs/check-report.md).
-// Exit 0 when every element is certified positive, 2 otherwise.
+// [--allow-degenerate] [--fidelity-limit P] [--volume-limit P]: certified
+// Jacobian, quality, fidelity and topology of a model; writes DIR/report.json
+// and DIR/report.html (docs/check-report.md). Exit 0 when every criterion
+// passes (docs/check-report.md), 2 otherwise, 1 on bad input.
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -23,12 +24,14 @@ struct CheckArgs {
   bool allow_degenerate = false;
 };
 
-int run_check(const CheckArgs& a) {
+int run_check(const CheckArgs& a, const CheckLimitFlags& limits) {
   const spline::MultiPatch mp = exporter::read_hdf5_model(a.model);
   std::vector<mesh::TriMesh> meshes;
   std::vector<std::string> labels;
+  iga_check::CheckOptions opt;
   if (!a.case_file.empty()) {
     const pipeline::Case c = pipeline::read_case(a.case_file);
+    opt = c.check;
     pipeline::Surfaces s = pipeline::load_surfaces(c);
     meshes = std::move(s.inputs);
     for (const auto& cs : c.surfaces) labels.push_back(cs.label);
@@ -38,12 +41,13 @@ int run_check(const CheckArgs& a) {
       labels.push_back(std::filesystem::path(f).stem().string());
     }
   }
-  iga_check::CheckOptions opt;
   opt.allow_degenerate = a.allow_degenerate;
+  limits.apply(opt);
   const iga_check::CheckReport r = iga_check::build_check_report(mp, meshes, labels, opt, a.model);
   iga_check::write_report(r, a.report_dir);
   for (const auto& w : r.warnings) std::cerr << "warning: " << w << "\n";
-  std::cout << r.verdict << "\n";
+  std::cout << r.verdict << "\n" << std::flush;
+  print_failed_criteria(r);
   std::cout << "report: " << (std::filesystem::path(a.report_dir) / "report.html").string() << "\n";
   return r.passed ? 0 : 2;
 }
@@ -63,7 +67,8 @@ void add_check_command(CLI::App& app) {
   sub->add_option("--report", args->report_dir, "Folder for report.json and report.html")->required();
   sub->add_flag("--allow-degenerate", args->allow_degenerate,
                 "Accept elements whose Jacobian vanishes only on their boundary (collapsed faces, poles)");
-  set_body(sub, [args] { return run_check(*args); });
+  auto limits = add_check_limit_flags(sub);
+  set_body(sub, [args, limits] { return run_check(*args, *limits); });
 }
 
 }  // namespace igaprep::cli

@@ -1,4 +1,5 @@
-// igaprep run [CASE.json] [-o OUTDIR] [--keep-intermediate]: the main job on a
+// igaprep run [CASE.json] [-o OUTDIR] [--keep-intermediate] [--fidelity-limit P]
+// [--volume-limit P]: the main job on a
 // case (the built-in default model ring2 when no case is given), through
 // pipeline::run with an observer that prints one line per stage.
 // Exit 0: the check passed and the validation met its rate (or was disabled);
@@ -21,9 +22,11 @@ void add_run_command(CLI::App& app) {
   sub->add_option("case", *case_path, "case file (JSON, docs/case-format.md)");
   sub->add_option("-o,--output", *output, "output folder (default: the case's output folder)");
   sub->add_flag("--keep-intermediate", *keep, "also write every intermediate mesh and field as VTU files");
-  set_body(sub, [case_path, output, keep] {
-    const pipeline::Case c = case_path->empty() ? pipeline::builtin_case(models::default_model_name())
-                                                : pipeline::read_case(*case_path);
+  auto limits = add_check_limit_flags(sub);
+  set_body(sub, [case_path, output, keep, limits] {
+    pipeline::Case c = case_path->empty() ? pipeline::builtin_case(models::default_model_name())
+                                          : pipeline::read_case(*case_path);
+    limits->apply(c.check);
     pipeline::RunOptions options;
     options.output_dir = output->empty() ? c.output_dir : *output;
     std::printf("igaprep run: case '%s' (%s), output %s\n", c.name.c_str(),

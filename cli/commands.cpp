@@ -1,5 +1,6 @@
 #include "commands.h"
 
+#include <cstdio>
 #include <map>
 
 namespace igaprep::cli {
@@ -22,6 +23,32 @@ std::map<CLI::App*, CommandBody>& bodies() {
 }  // namespace
 
 void set_body(CLI::App* sub, CommandBody body) { bodies()[sub] = std::move(body); }
+
+void CheckLimitFlags::apply(iga_check::CheckOptions& options) const {
+  if (fidelity_percent) options.fidelity_limit = *fidelity_percent / 100.0;
+  if (volume_percent) options.volume_limit = *volume_percent / 100.0;
+}
+
+std::shared_ptr<CheckLimitFlags> add_check_limit_flags(CLI::App* sub) {
+  auto flags = std::make_shared<CheckLimitFlags>();
+  sub->add_option("--fidelity-limit", flags->fidelity_percent,
+                  "largest distance between an input surface and the model, percent of the input's diagonal "
+                  "(default 0.5, or the case's check.fidelity_limit)")
+      ->check(CLI::Range(1e-6, 100.0));
+  sub->add_option("--volume-limit", flags->volume_percent,
+                  "largest material volume difference, percent of the input's (default 0.5, or the case's "
+                  "check.volume_limit)")
+      ->check(CLI::Range(1e-6, 100.0));
+  return flags;
+}
+
+void print_failed_criteria(const iga_check::CheckReport& report) {
+  for (const iga_check::Criterion& c : report.criteria) {
+    if (c.passed) continue;
+    std::printf("  %s FAILED: %s\n", c.name.c_str(), c.summary.c_str());
+    for (const std::string& f : c.findings) std::printf("    %s\n", f.c_str());
+  }
+}
 
 void register_commands(CLI::App& app) {
   add_run_command(app);

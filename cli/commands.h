@@ -3,6 +3,10 @@
 // add_*_command function that adds its subcommand and a callback.
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <memory>
+#include <optional>
+
+#include "igaprep/iga_check/report.h"
 
 namespace igaprep::cli {
 
@@ -14,5 +18,16 @@ int run_selected(CLI::App& app);
 
 // Called by register_commands; each stores its body with set_body.
 void set_body(CLI::App* sub, CommandBody body);
+
+// --fidelity-limit and --volume-limit (percent) of `check` and `run`; unset
+// flags leave the case's (or the default) limits.
+struct CheckLimitFlags {
+  std::optional<double> fidelity_percent, volume_percent;
+  void apply(iga_check::CheckOptions& options) const;
+};
+std::shared_ptr<CheckLimitFlags> add_check_limit_flags(CLI::App* sub);
+
+// Prints the failed criteria of a check and where they fail, one line each.
+void print_failed_criteria(const iga_check::CheckReport& report);
 
 }  // namespace igaprep::cli

@@ -9,9 +9,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <string>
 
 #include "igaprep/core/error.h"
+#include "igaprep/core/union_find.h"
 #include "igaprep/spline/curve_surface.h"
 #include "igaprep/spline/evaluate.h"
 #include "igaprep/spline/knot_vector.h"
@@ -62,6 +64,7 @@ DistanceStats summarize(std::vector<double> d, const std::vector<Eigen::Vector3d
 struct Face {
   spline::Surface surface;
   std::array<std::pair<double, double>, 2> domain;
+  FaceDistance distance;  // its place in the model; max filled by the spline -> mesh pass
 };
 
 // Gauss-Newton (with a tiny Levenberg term for collapsed edges) for the point
@@ -88,6 +91,45 @@ double project(const Face& f, const Eigen::Vector3d& x, Eigen::Vector2d uv, int 
 }
 
 }  // namespace
+
+double mesh_diagonal(const mesh::TriMesh& m) {
+  if (m.V.rows() == 0) return 0.0;
+  return (m.V.colwise().maxCoeff() - m.V.colwise().minCoeff()).norm();
+}
+
+std::vector<UncoveredRegion> uncovered_regions(const mesh::TriMesh& mesh, const std::vector<double>& distance,
+                                               double limit) {
+  const int n = static_cast<int>(mesh.V.rows());
+  if (static_cast<int>(distance.size()) != n)
+    throw bad_input("uncovered_regions: " + std::to_string(distance.size()) + " distances for " + std::to_string(n) +
+                    " vertices");
+  auto far = [&](int v) { return distance[static_cast<size_t>(v)] > limit; };
+  UnionFind sets(n);
+  for (int f = 0; f < mesh.F.rows(); ++f)
+    for (int e = 0; e < 3; ++e) {
+      const int a = mesh.F(f, e), b = mesh.F(f, (e + 1) % 3);
+      if (far(a) && far(b)) sets.unite(a, b);
+    }
+  std::map<int, UncoveredRegion> by_root;
+  for (int v = 0; v < n; ++v) {
+    if (!far(v)) continue;
+    UncoveredRegion& r = by_root[sets.find(v)];
+    const Eigen::Vector3d x = mesh.V.row(v).transpose();
+    ++r.vertices;
+    r.centroid += x;
+    if (r.vertices == 1 || distance[static_cast<size_t>(v)] > r.max) {
+      r.max = distance[static_cast<size_t>(v)];
+      r.farthest = x;
+    }
+  }
+  std::vector<UncoveredRegion> out;
+  for (auto& [root, r] : by_root) {
+    r.centroid /= r.vertices;
+    out.push_back(r);
+  }
+  std::stable_sort(out.begin(), out.end(), [](const UncoveredRegion& a, const UncoveredRegion& b) { return a.max > b.max; });
+  return out;
+}
 
 double model_diagonal(const spline::MultiPatch& mp) {
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
@@ -116,11 +158,14 @@ std::vector<SurfaceFidelity> fidelity(const spline::MultiPatch& mp, const std::v
     sf.surface = static_cast<int>(si);
     if (si < mp.labels.size()) sf.label = mp.labels[si];
     std::vector<Face> faces;
-    auto add_face = [&](int patch, spline::Side side) {
+    auto add_face = [&](int patch, spline::Side side, bool interface) {
       if (patch < 0 || patch >= static_cast<int>(mp.patches.size()))
         throw bad_input("fidelity: side refers to patch " + std::to_string(patch) + ", which does not exist");
       Face f;
       f.surface = spline::boundary_surface(mp.patches[patch], side);
+      f.distance.patch = patch;
+      f.distance.side = side;
+      f.distance.interface = interface;
       for (int d = 0; d < 2; ++d) {
         const auto& U = f.surface.knots[d];
         const int p = f.surface.degrees[d];
@@ -130,12 +175,12 @@ std::vector<SurfaceFidelity> fidelity(const spline::MultiPatch& mp, const std::v
     };
     for (const auto& b : mp.boundaries)
       if (b.label == static_cast<int>(si)) {
-        add_face(b.patch, b.side);
+        add_face(b.patch, b.side, false);
         ++sf.boundary_faces;
       }
     for (const auto& itf : mp.interfaces)
       if (itf.surface == static_cast<int>(si)) {
-        add_face(itf.patch_a, itf.side_a);
+        add_face(itf.patch_a, itf.side_a, true);
         ++sf.interface_faces;
       }
     if (faces.empty()) continue;
@@ -150,15 +195,21 @@ std::vector<SurfaceFidelity> fidelity(const spline::MultiPatch& mp, const std::v
     mesh_tree.accelerate_distance_queries();
     std::vector<double> d1;
     std::vector<Eigen::Vector3d> w1;
-    for (const Face& f : faces) {
+    for (Face& f : faces) {
       std::array<std::vector<double>, 2> params{{element_grid(f.surface.knots[0], options.samples_per_element),
                                                  element_grid(f.surface.knots[1], options.samples_per_element)}};
       const spline::GridEvaluation ev = spline::evaluate_grid(f.surface, params, 0);
       for (int i = 0; i < ev.points.rows(); ++i) {
         const Eigen::Vector3d x = ev.points.row(i).transpose();
-        d1.push_back(std::sqrt(mesh_tree.squared_distance(pt(x))));
+        const double d = std::sqrt(mesh_tree.squared_distance(pt(x)));
+        d1.push_back(d);
         w1.push_back(x);
+        if (d > f.distance.max || i == 0) {
+          f.distance.max = d;
+          f.distance.max_location = x;
+        }
       }
+      sf.faces.push_back(f.distance);
     }
     sf.spline_to_mesh = summarize(d1, w1, diagonal);
 
@@ -210,6 +261,7 @@ std::vector<SurfaceFidelity> fidelity(const spline::MultiPatch& mp, const std::v
       w2.push_back(x);
     }
     sf.mesh_to_spline = summarize(d2, w2, diagonal);
+    sf.vertex_distance = std::move(d2);
     out.push_back(std::move(sf));
   }
   return out;

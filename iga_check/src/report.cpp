@@ -96,6 +96,19 @@ ordered_json pipeline_json(const PipelineSection& p) {
   return j;
 }
 
+ordered_json criteria_json(const std::vector<Criterion>& criteria) {
+  ordered_json out = ordered_json::array();
+  for (const Criterion& c : criteria)
+    out.push_back({{"name", c.name},
+                   {"checked", c.checked},
+                   {"passed", c.passed},
+                   {"value", num(c.value)},
+                   {"limit", num(c.limit)},
+                   {"summary", c.summary},
+                   {"findings", c.findings}});
+  return out;
+}
+
 std::string fmt(double x) {
   if (!std::isfinite(x)) return std::isnan(x) ? "n/a" : (x > 0 ? "inf" : "-inf");
   char buf[64];
@@ -147,6 +160,21 @@ std::string svg_histogram(const Histogram& h, const std::string& title) {
   return s.str();
 }
 
+// One row per criterion: result, summary and where it fails.
+std::string criteria_html(const std::vector<Criterion>& criteria) {
+  std::ostringstream h;
+  h << "<table id=\"criteria\">\n<tr><th>criterion</th><th>result</th><th>figure</th><th>where</th></tr>\n";
+  for (const Criterion& c : criteria) {
+    const char* result = !c.checked ? "\">not checked" : c.passed ? "pass\">pass" : "fail\">FAIL";
+    h << "<tr><td>" << esc(c.name) << "</td><td class=\"" << result << "</td><td style=\"text-align:left\">"
+      << esc(c.summary) << "</td><td style=\"text-align:left\">";
+    for (std::size_t i = 0; i < c.findings.size(); ++i) h << (i ? "<br>" : "") << esc(c.findings[i]);
+    h << "</td></tr>\n";
+  }
+  h << "</table>\n";
+  return h.str();
+}
+
 // The run's section of report.html: verdict, stage times, figures, validation.
 std::string pipeline_html(const PipelineSection& p) {
   std::ostringstream h;
@@ -193,23 +221,10 @@ std::string pipeline_html(const PipelineSection& p) {
 
 }  // namespace
 
-CheckReport build_check_report(const spline::MultiPatch& mp, const std::vector<mesh::TriMesh>& surfaces,
-                               const std::vector<std::string>& surface_labels, const CheckOptions& options,
-                               const std::string& model) {
-  CheckReport r;
-  r.model = model;
-  r.allow_degenerate = options.allow_degenerate;
-  r.surface_labels = surface_labels;
-  for (size_t i = r.surface_labels.size(); i < surfaces.size(); ++i)
-    r.surface_labels.push_back(i < mp.labels.size() ? mp.labels[i] : "surface " + std::to_string(i));
-  for (const auto& m : mp.materials) r.material_names.push_back(m.name);
-  if (mp.patches.empty()) throw bad_input("check: the model has no patches");
-  r.diagonal = model_diagonal(mp);
-  r.certificates = certify_model(mp, options.certify);
-  r.quality = quality_metrics(mp, options.quality);
-  r.fidelity = fidelity(mp, surfaces, r.diagonal, options.fidelity);
-  r.topology = topology_checks(mp, surfaces, r.diagonal, options.conformity_tolerance);
+namespace {
 
+// Per-patch counts of the certificates and the patches that fail.
+void summarize_patches(CheckReport& r, const spline::MultiPatch& mp, bool allow_degenerate) {
   r.patches.resize(mp.patches.size());
   for (size_t p = 0; p < mp.patches.size(); ++p) {
     r.patches[p].patch = static_cast<int>(p);
@@ -226,13 +241,14 @@ CheckReport build_check_report(const spline::MultiPatch& mp, const std::vector<m
       case ElementStatus::Undecided: ++s.undecided; break;
     }
     s.det_j_lower_bound = std::min(s.det_j_lower_bound, c.lower_bound);
-    if (!element_passes(c, options.allow_degenerate)) s.passed = false;
+    if (!element_passes(c, allow_degenerate)) s.passed = false;
   }
   for (const auto& s : r.patches)
     if (!s.passed) r.failed_patches.push_back(s.patch);
-  r.passed = r.failed_patches.empty();
+}
 
-  // Worst elements: failing ones first, then by lower bound.
+// Failing elements first, then by certified lower bound.
+std::vector<ElementCertificate> worst_elements_of(const CheckReport& r, const CheckOptions& options) {
   std::vector<ElementCertificate> sorted = r.certificates;
   std::stable_sort(sorted.begin(), sorted.end(), [&](const ElementCertificate& a, const ElementCertificate& b) {
     const bool pa = element_passes(a, options.allow_degenerate), pb = element_passes(b, options.allow_degenerate);
@@ -240,34 +256,79 @@ CheckReport build_check_report(const spline::MultiPatch& mp, const std::vector<m
     return a.lower_bound < b.lower_bound;
   });
   if (static_cast<int>(sorted.size()) > options.worst_elements) sorted.resize(options.worst_elements);
-  r.worst_elements = sorted;
+  return sorted;
+}
 
-  // Warnings that do not decide the verdict.
-  if (!r.topology.conforming)
-    r.warnings.push_back("interfaces not conforming: largest control-point gap " + fmt(r.topology.interface_max_gap));
-  if (!r.topology.watertight)
-    for (const auto& w : r.topology.watertight_problems) r.warnings.push_back("not watertight: " + w);
-  for (const auto& rv : r.topology.regions)
-    if (rv.patches > 0 && std::abs(rv.relative_difference) > 0.05)
-      r.warnings.push_back("region " + std::to_string(rv.region) + " volume differs from the input by " +
-                           fmt(100 * rv.relative_difference) + "%");
-
+Criterion jacobian_criterion(const CheckReport& r, std::size_t patches, bool allow_degenerate) {
   const ElementTotals t = element_totals(r);
+  Criterion c;
+  c.name = "jacobian";
+  c.passed = r.failed_patches.empty();
+  c.value = static_cast<double>(t.negative + t.undecided + (allow_degenerate ? 0 : t.degenerate));
   std::ostringstream v;
-  if (r.passed) {
-    v << "PASS: all " << t.elements << " elements of " << mp.patches.size() << " patches certified: "
-      << t.positive << " positive";
+  if (c.passed) {
+    v << "all " << t.elements << " elements of " << patches << " patches certified: " << t.positive << " positive";
     if (t.degenerate > 0) v << ", " << t.degenerate << " degenerate (det J = 0 only on the element boundary, allowed)";
   } else {
-    v << "FAIL: patches";
+    v << "patches";
     for (int p : r.failed_patches) v << ' ' << p;
     v << " not certified positive (" << t.negative << " negative, " << t.degenerate << " degenerate"
-      << (options.allow_degenerate ? " allowed" : "") << ", " << t.undecided << " undecided elements)";
-    if (!options.allow_degenerate && t.negative == 0 && t.undecided == 0)
+      << (allow_degenerate ? " allowed" : "") << ", " << t.undecided << " undecided elements)";
+    if (!allow_degenerate && t.negative == 0 && t.undecided == 0)
       v << "; only degenerate elements fail: a check that allows degenerate elements "
            "(CheckOptions::allow_degenerate) accepts them";
   }
-  r.verdict = v.str();
+  c.summary = v.str();
+  return c;
+}
+
+// One line: PASS and what was certified, or FAIL and every failed criterion.
+std::string verdict_of(const CheckReport& r) {
+  std::string v = r.passed ? "PASS: " : "FAIL: ";
+  bool first = true;
+  for (const Criterion& c : r.criteria) {
+    if (r.passed ? c.name != "jacobian" && c.name != "fidelity" && c.name != "volume" : c.passed) continue;
+    if (!first) v += "; ";
+    first = false;
+    v += r.passed && c.name == "jacobian" ? c.summary : c.name + ": " + c.summary;
+  }
+  return v;
+}
+
+}  // namespace
+
+CheckReport build_check_report(const spline::MultiPatch& mp, const std::vector<mesh::TriMesh>& surfaces,
+                               const std::vector<std::string>& surface_labels, const CheckOptions& options,
+                               const std::string& model) {
+  CheckReport r;
+  r.model = model;
+  r.allow_degenerate = options.allow_degenerate;
+  r.surface_labels = surface_labels;
+  for (size_t i = r.surface_labels.size(); i < surfaces.size(); ++i)
+    r.surface_labels.push_back(i < mp.labels.size() ? mp.labels[i] : "surface " + std::to_string(i));
+  for (const auto& m : mp.materials) r.material_names.push_back(m.name);
+  if (mp.patches.empty()) throw bad_input("check: the model has no patches");
+  if (!(options.fidelity_limit > 0.0) || !(options.volume_limit > 0.0))
+    throw bad_input("check: the fidelity and volume limits must be positive");
+  r.diagonal = model_diagonal(mp);
+  r.input_diagonal = surfaces.empty() ? 0.0 : mesh_diagonal(surfaces.front());
+  if (!surfaces.empty() && !(r.input_diagonal > 0.0)) throw bad_input("check: the outer input surface has no extent");
+  r.certificates = certify_model(mp, options.certify);
+  r.quality = quality_metrics(mp, options.quality);
+  r.fidelity = fidelity(mp, surfaces, surfaces.empty() ? r.diagonal : r.input_diagonal, options.fidelity);
+  r.topology = topology_checks(mp, surfaces, r.diagonal, options.conformity_tolerance);
+  summarize_patches(r, mp, options.allow_degenerate);
+  r.worst_elements = worst_elements_of(r, options);
+
+  r.criteria = {jacobian_criterion(r, mp.patches.size(), options.allow_degenerate),
+                conformity_criterion(r.topology, options.conformity_tolerance), watertight_criterion(r.topology),
+                fidelity_criterion(r.fidelity, surfaces, r.surface_labels, r.input_diagonal, options.fidelity_limit),
+                volume_criterion(r.topology, r.surface_labels, std::max(1, static_cast<int>(mp.materials.size())),
+                                 options.volume_limit)};
+  r.passed = std::all_of(r.criteria.begin(), r.criteria.end(), [](const Criterion& c) { return c.passed; });
+  for (const Criterion& c : r.criteria)
+    if (!c.checked) r.warnings.push_back(c.name + " " + c.summary);
+  r.verdict = verdict_of(r);
   return r;
 }
 
@@ -303,8 +364,10 @@ std::string report_json(const CheckReport& r) {
                   {"failed_patches", r.failed_patches},
                   {"min_det_j_lower_bound", num(min_lower)},
                   {"min_scaled_jacobian", num(r.quality.overall.scaled_jacobian.min)},
-                  {"warnings", r.warnings}};
+                  {"warnings", r.warnings},
+                  {"criteria", criteria_json(r.criteria)}};
   j["bounding_box_diagonal"] = num(r.diagonal);
+  j["input_diagonal"] = num(r.input_diagonal);
   ordered_json patches = ordered_json::array();
   for (size_t p = 0; p < r.patches.size(); ++p) {
     const PatchSummary& s = r.patches[p];
@@ -400,11 +463,7 @@ std::string report_html(const CheckReport& r) {
   h << "<h1>Analysis-suitability report</h1>\n<p>Model: <code>" << esc(r.model) << "</code>; bounding-box diagonal "
     << fmt(r.diagonal) << "</p>\n";
   h << "<p id=\"verdict\" class=\"" << (r.passed ? "pass" : "fail") << "\">" << esc(r.verdict) << "</p>\n";
-  if (!r.warnings.empty()) {
-    h << "<ul>\n";
-    for (const auto& w : r.warnings) h << "<li>" << esc(w) << "</li>\n";
-    h << "</ul>\n";
-  }
+  h << criteria_html(r.criteria);
   if (r.pipeline) h << pipeline_html(*r.pipeline);
   h << "<h2>Patches</h2>\n<table>\n<tr><th>patch</th><th>material</th><th>elements</th><th>positive</th>"
        "<th>negative</th><th>degenerate</th><th>undecided</th><th>certified min det J &ge;</th><th>min det J "

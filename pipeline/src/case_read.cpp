@@ -190,6 +190,16 @@ CaseValidation read_validation(const json& v, const std::string& file) {
   return c;
 }
 
+// Limits in percent in the file, fractions in CheckOptions.
+iga_check::CheckOptions read_check(const json& v, const std::string& file) {
+  ObjectReader r(v, "check", file);
+  iga_check::CheckOptions o;
+  o.fidelity_limit = r.number_in("fidelity_limit", 100.0 * o.fidelity_limit, 1e-6, 100.0) / 100.0;
+  o.volume_limit = r.number_in("volume_limit", 100.0 * o.volume_limit, 1e-6, 100.0) / 100.0;
+  r.refuse_unknown();
+  return o;
+}
+
 std::vector<CaseMaterial> read_materials(ObjectReader& r, std::size_t surfaces, const std::string& file) {
   std::vector<CaseMaterial> out;
   const json* materials = r.find("materials");
@@ -253,6 +263,7 @@ void read_sections(ObjectReader& r, const std::string& file, Case& c) {
   if (const json* d = r.find("decomposition")) read_decomposition_section(*d, file, c.base, c.volume);
   if (const json* f = r.find("fit")) read_fit_section(*f, file, c.fit, c.jacobian);
   if (const json* e = r.find("export")) c.export_formats = read_export(*e, file);
+  if (const json* k = r.find("check")) c.check = read_check(*k, file);
   if (const json* v = r.find("validation")) c.validation = read_validation(*v, file);
   if (const json* l = r.find("load_case")) {
     c.load_case = read_load_case(*l, file);

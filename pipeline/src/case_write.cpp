@@ -42,6 +42,15 @@ json validation_json(const CaseValidation& v) {
           {"patches", v.patches}, {"solver", solver_name(v.solver)}};
 }
 
+json check_json(const iga_check::CheckOptions& o) {
+  return {{"fidelity_limit", 100.0 * o.fidelity_limit}, {"volume_limit", 100.0 * o.volume_limit}};
+}
+
+bool check_is_default(const iga_check::CheckOptions& o) {
+  const iga_check::CheckOptions d;
+  return o.fidelity_limit == d.fidelity_limit && o.volume_limit == d.volume_limit;
+}
+
 json selection_json(const CaseSideSelection& w) {
   json e{{"label", w.label}};
   if (w.box) e["box"] = {{(*w.box)[0].x(), (*w.box)[0].y(), (*w.box)[0].z()}, {(*w.box)[1].x(), (*w.box)[1].y(), (*w.box)[1].z()}};
@@ -108,6 +117,7 @@ void add_stage_options(const Case& c, json& root) {
                  {"jacobian_sweeps", c.jacobian.sweeps},
                  {"jacobian_points", c.jacobian.points}};
   root["export"] = c.export_formats;
+  root["check"] = check_json(c.check);
   root["validation"] = validation_json(c.validation);
   if (c.load_case) root["load_case"] = load_case_json(*c.load_case);
 }
@@ -134,6 +144,7 @@ std::string case_json(const Case& c, const std::string& relative_to, bool all_op
     add_stage_options(c, root);
   } else {
     if (!c.export_formats.empty()) root["export"] = c.export_formats;
+    if (!check_is_default(c.check)) root["check"] = check_json(c.check);
     if (!validation_is_default(c.validation)) root["validation"] = validation_json(c.validation);
   }
   return root.dump(2) + "\n";

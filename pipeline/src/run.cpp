@@ -13,7 +13,7 @@
 #include "igaprep/pipeline/validation.h"
 #include "igaprep/pipeline/volume.h"
 #include "stage_timer.h"
-#include "text.h"
+#include "igaprep/core/text.h"
 
 namespace igaprep::pipeline {
 namespace {
@@ -70,26 +70,11 @@ iga_check::PipelineSection pipeline_section(const Case& c, const param::Midsurfa
   return p;
 }
 
-// What a model must meet beyond the check's positive elements to pass a run:
-// its boundary within 0.5 % of the diagonal of every input surface it stands
-// for (both ways), and every material volume within 0.5 % of the input's.
-// A model that misses part of the solid has only positive elements too.
-constexpr double kFidelityLimit = 0.005, kVolumeLimit = 0.005;
-
-// Empty when the figures are within those limits, else what is not.
-std::string geometry_shortfall(const CheckFigures& f) {
-  std::string out;
-  for (double x : f.fidelity)
-    if (!(x <= kFidelityLimit)) out += text("%sfidelity %.3f %% > 0.5 %%", out.empty() ? "" : ", ", 100.0 * x);
-  for (double x : f.volume_difference)
-    if (!(std::abs(x) <= kVolumeLimit)) out += text("%svolume %+.3f %% beyond 0.5 %%", out.empty() ? "" : ", ", 100.0 * x);
-  return out;
-}
-
-std::string verdict_of(const iga_check::CheckReport& report, const iga_check::PipelineSection& p,
-                       const std::string& shortfall) {
-  std::string verdict = report.passed ? "check passed" : "check FAILED";
-  if (!shortfall.empty()) verdict += "; geometry FAILED (" + shortfall + ")";
+std::string verdict_of(const iga_check::CheckReport& report, const iga_check::PipelineSection& p) {
+  std::string failed;
+  for (const iga_check::Criterion& c : report.criteria)
+    if (!c.passed) failed += (failed.empty() ? "" : ", ") + c.name;
+  std::string verdict = report.passed ? "check passed" : "check FAILED (" + failed + ")";
   if (!p.validation)
     verdict += "; validation off";
   else if (!p.validation->ran)
@@ -180,10 +165,10 @@ RunResult run(const Case& c, Observer& outer, const RunOptions& o) {
   const Decomposition d = decompose_stage(c, surfaces, base, observer);
   r.rectangles = static_cast<int>(d.layout.rectangles.size());
   r.boundary_segments = static_cast<int>(d.layout.crests.size());
-  Fit fit = fit_stage(c, d, param_stage(c, d, observer), observer);
+  Fit fit = fit_stage(c, d, param_stage(c, surfaces, d, observer), observer);
   fill_provenance(c, fit.model);
 
-  Check check = check_stage(fit.model, surfaces.inputs, {}, observer);
+  Check check = check_stage(fit.model, surfaces.inputs, c.check, observer);
   r.report = std::move(check.report);
   r.report.model = "model.h5";
   r.report.pipeline = pipeline_section(c, mid, fit, check.figures);
@@ -195,9 +180,8 @@ RunResult run(const Case& c, Observer& outer, const RunOptions& o) {
   if (c.validation.enabled) p.validation = validation_stage(r.model, r.report, c.validation, observer);
   if (c.load_case) run_load_case(c, observer, o, r, stages);
   p.stages = stages;
-  const std::string shortfall = geometry_shortfall(check.figures);
-  p.passed = r.report.passed && shortfall.empty() && (!p.validation || p.validation->met);
-  p.verdict = verdict_of(r.report, p, shortfall);
+  p.passed = r.report.passed && (!p.validation || p.validation->met);
+  p.verdict = verdict_of(r.report, p);
   r.passed = p.passed;
   write_report(r, o);
   return r;

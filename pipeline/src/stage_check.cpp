@@ -3,12 +3,12 @@
 #include <algorithm>
 
 #include "stage_timer.h"
-#include "text.h"
+#include "igaprep/core/text.h"
 
 namespace igaprep::pipeline {
 namespace {
 
-CheckFigures figures_of(const iga_check::CheckReport& r, const std::vector<mesh::TriMesh>& surfaces) {
+CheckFigures figures_of(const iga_check::CheckReport& r) {
   CheckFigures f;
   const iga_check::ElementTotals totals = iga_check::element_totals(r);
   f.elements = totals.elements;
@@ -17,11 +17,8 @@ CheckFigures figures_of(const iga_check::CheckReport& r, const std::vector<mesh:
   f.degenerate = totals.degenerate;
   f.undecided = totals.undecided;
   f.min_scaled_jacobian = r.quality.overall.scaled_jacobian.min;
-  for (const auto& s : r.fidelity) {
-    const auto& V = surfaces.at(static_cast<std::size_t>(s.surface)).V;
-    const double diag = (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm();
-    f.fidelity.push_back(std::max(s.spline_to_mesh.max, s.mesh_to_spline.max) / diag);
-  }
+  for (const auto& s : r.fidelity)
+    f.fidelity.push_back(std::max(s.spline_to_mesh.max_relative, s.mesh_to_spline.max_relative));
   for (const auto& v : r.topology.regions) f.volume_difference.push_back(v.relative_difference);
   f.interface_gap = r.topology.interface_max_gap_relative;
   return f;
@@ -39,6 +36,17 @@ std::string headline(const iga_check::CheckReport& r, const CheckFigures& f, con
   return line;
 }
 
+// What failed and where, a line per finding.
+std::vector<std::string> failures(const iga_check::CheckReport& r) {
+  std::vector<std::string> out;
+  for (const iga_check::Criterion& c : r.criteria) {
+    if (c.passed) continue;
+    out.push_back(c.name + " FAILED: " + c.summary);
+    for (const std::string& f : c.findings) out.push_back("  " + f);
+  }
+  return out;
+}
+
 }  // namespace
 
 Check check_stage(const spline::MultiPatch& mp, const std::vector<mesh::TriMesh>& surfaces,
@@ -48,9 +56,9 @@ Check check_stage(const spline::MultiPatch& mp, const std::vector<mesh::TriMesh>
   iga_check::CheckOptions with_progress = options;
   with_progress.certify.progress = progress_to(observer);
   c.report = iga_check::build_check_report(mp, surfaces, mp.labels, with_progress, "model.h5");
-  c.figures = figures_of(c.report, surfaces);
+  c.figures = figures_of(c.report);
   c.figures.seconds = timer.seconds();
-  observer.stage_finished({"check", c.figures.seconds, headline(c.report, c.figures, mp.labels), {}});
+  observer.stage_finished({"check", c.figures.seconds, headline(c.report, c.figures, mp.labels), failures(c.report)});
   return c;
 }
 

@@ -1,9 +1,10 @@
 #include <Eigen/Core>
 
+#include "block_coverage.h"
 #include "igaprep/param/blocks_tet_mesh.h"
 #include "igaprep/pipeline/volume.h"
 #include "stage_timer.h"
-#include "text.h"
+#include "igaprep/core/text.h"
 
 namespace igaprep::pipeline {
 namespace {
@@ -53,8 +54,7 @@ void offer_blocks_mesh(const param::VolumeParam& vp, double diag, Observer& obse
   if (!observer.wants_intermediate("decomposition_blocks") &&
       !observer.wants_intermediate("decomposition_blocks_faces"))
     return;
-  const std::vector<param::SampledBlock> coarse = thinned_blocks(vp);
-  const param::BlocksTetMesh bm = param::blocks_tet_mesh(coarse, 1e-9 * diag);
+  const param::BlocksTetMesh bm = param::blocks_tet_mesh(thinned_blocks(vp), 1e-9 * diag);
   offer_intermediate(observer, "decomposition_blocks", [&] {
     mesh::VtuMesh v = mesh::vtu_tets(bm.tets);
     v.add_cell_data("block", bm.block);
@@ -87,7 +87,7 @@ Decomposition decompose_stage(const Case& c, const Surfaces& surfaces, const par
   return d;
 }
 
-param::VolumeParam param_stage(const Case& c, const Decomposition& d, Observer& observer) {
+param::VolumeParam param_stage(const Case& c, const Surfaces& surfaces, const Decomposition& d, Observer& observer) {
   StageTimer timer;
   param::VolumeParamOptions options = c.volume;
   options.progress = progress_to(observer);
@@ -106,6 +106,8 @@ param::VolumeParam param_stage(const Case& c, const Decomposition& d, Observer& 
                      vp.blocks[i].layer, vp.blocks[i].folded);
     s.details.push_back(line);
   }
+  for (std::string& line : block_coverage_findings(vp, surfaces, c.check)) s.details.push_back(std::move(line));
+  s.seconds = timer.seconds();
   observer.stage_finished(s);
   offer_intermediate(observer, "decomposition_samples", [&] { return samples_vtu(vp); });
   offer_blocks_mesh(vp, d.diagonal, observer);

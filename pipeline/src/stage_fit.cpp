@@ -4,7 +4,7 @@
 #include "igaprep/spline/find_interfaces.h"
 #include "igaprep/spline/label_sides.h"
 #include "stage_timer.h"
-#include "text.h"
+#include "igaprep/core/text.h"
 
 namespace igaprep::pipeline {
 namespace {

@@ -4,7 +4,7 @@
 
 #include "igaprep/mesh/tet_volume.h"
 #include "stage_timer.h"
-#include "text.h"
+#include "igaprep/core/text.h"
 
 namespace igaprep::pipeline {
 namespace {

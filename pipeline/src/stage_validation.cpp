@@ -15,7 +15,7 @@
 #include "igaprep/spline/side.h"
 #include "igaprep/spline/submodel.h"
 #include "stage_timer.h"
-#include "text.h"
+#include "igaprep/core/text.h"
 
 namespace igaprep::pipeline {
 

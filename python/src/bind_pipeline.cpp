@@ -83,11 +83,13 @@ mesh::TriMesh tri_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
 }
 
 py::dict check(const spline::MultiPatch& model, const std::vector<std::pair<Eigen::MatrixXd, Eigen::MatrixXi>>& surfaces,
-               bool allow_degenerate) {
+               bool allow_degenerate, double fidelity_limit, double volume_limit) {
   std::vector<mesh::TriMesh> meshes;
   for (const auto& [V, F] : surfaces) meshes.push_back(tri_mesh(V, F));
   iga_check::CheckOptions options;
   options.allow_degenerate = allow_degenerate;
+  options.fidelity_limit = fidelity_limit / 100.0;
+  options.volume_limit = volume_limit / 100.0;
   iga_check::CheckReport r;
   {
     py::gil_scoped_release release;
@@ -120,9 +122,11 @@ void bind_pipeline(py::module_& m) {
         "report['check'] the check's report.json, report['pipeline'] the run's figures. on_stage(dict) is\n"
         "called after each stage.");
   m.def("check", &check, py::arg("model"), py::arg("surfaces") = std::vector<std::pair<Eigen::MatrixXd, Eigen::MatrixXi>>{},
-        py::arg("allow_degenerate") = false,
+        py::arg("allow_degenerate") = false, py::arg("fidelity_limit") = 100.0 * iga_check::CheckOptions{}.fidelity_limit,
+        py::arg("volume_limit") = 100.0 * iga_check::CheckOptions{}.volume_limit,
         "Certified Jacobians, quality, fidelity (to the surfaces (V, F), outermost first) and topology;\n"
-        "report.json as a dict with 'passed' at the top.");
+        "report.json as a dict with 'passed' at the top. The limits are in percent (of the outer surface's\n"
+        "diagonal, of each material's volume); summary['criteria'] says which criterion failed and where.");
 }
 
 }  // namespace igaprep::python

@@ -130,4 +130,13 @@ inline igaprep::spline::MultiPatch sphere_shell(double r0, double r1) {
 // the sphere, faces outward.
 inline igaprep::mesh::TriMesh icosphere(double r, int level) { return igaprep::models::make_ellipsoid(r, r, r, level); }
 
+// The mesh with the vertex nearest `direction` pushed out by `height`.
+inline igaprep::mesh::TriMesh with_bump(igaprep::mesh::TriMesh m, const Eigen::Vector3d& direction, double height) {
+  int best = 0;
+  for (int v = 0; v < m.V.rows(); ++v)
+    if (m.V.row(v).dot(direction) > m.V.row(best).dot(direction)) best = v;
+  m.V.row(best) *= 1.0 + height / m.V.row(best).norm();
+  return m;
+}
+
 }  // namespace check_test

@@ -1,5 +1,6 @@
 // `igaprep check` end to end: HDF5 model in, report folder out, exit codes
-// 0 (certified positive) and 2 (failed, verdict names the patches).
+// 0 (every criterion passed), 2 (failed: the verdict names the criteria,
+// the lines after it where they fail) and 1 (bad input).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -61,12 +62,12 @@ TEST(CheckCommand, ExitCodesAndReport) {
 
   // Sphere shell: degenerate at the poles, so it passes only with --allow-degenerate.
   exporter::write_hdf5_model(check_test::sphere_shell(0.5, 1.0), dir + "/shell.h5");
-  mesh::write_surface(dir + "/outer.off", check_test::icosphere(1.0, 3));
-  mesh::write_surface(dir + "/inner.off", check_test::icosphere(0.5, 3));
+  mesh::write_surface(dir + "/outer.off", check_test::icosphere(1.0, 4));
+  mesh::write_surface(dir + "/inner.off", check_test::icosphere(0.5, 4));
   const std::string surf = " --surface " + dir + "/outer.off --surface " + dir + "/inner.off";
   CliRun r = run("check " + dir + "/shell.h5" + surf + " --report " + dir + "/strict");
   EXPECT_EQ(r.code, 2) << r.out;
-  EXPECT_NE(r.out.find("FAIL: patches 0 1 2 3"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("FAIL: jacobian: patches 0 1 2 3"), std::string::npos) << r.out;
   r = run("check " + dir + "/shell.h5" + surf + " --report " + dir + "/shell --allow-degenerate");
   EXPECT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("PASS"), std::string::npos) << r.out;
@@ -80,13 +81,36 @@ TEST(CheckCommand, ExitCodesAndReport) {
   EXPECT_LT(j["fidelity"][0]["mesh_to_spline"]["max"].get<double>(), 1e-8);
   EXPECT_TRUE(std::filesystem::exists(dir + "/shell/report.html"));
 
+  // A bump on the outer input that the model does not follow: exit 2, the
+  // fidelity criterion and the uncovered vertex; a looser limit accepts it.
+  mesh::write_surface(dir + "/bumped.off",
+                      check_test::with_bump(check_test::icosphere(1.0, 4), Eigen::Vector3d(1, 1, 0.3), 0.05));
+  const std::string bumped = " --surface " + dir + "/bumped.off --surface " + dir + "/inner.off --allow-degenerate";
+  r = run("check " + dir + "/shell.h5" + bumped + " --report " + dir + "/bump");
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("FAIL: fidelity: largest distance between an input surface and the model 1.4"),
+            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  fidelity FAILED: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("'bumped': 1 input vertex around ("), std::string::npos) << r.out;  // the file's stem
+  r = run("check " + dir + "/shell.h5" + bumped + " --report " + dir + "/bump_loose --fidelity-limit 2");
+  EXPECT_EQ(r.code, 0) << r.out;
+
+  // A model 0.4 % smaller: the volume criterion fails alone (-1.2 %, of which
+  // the inscribed meshes' own deficit takes back 0.2 %).
+  exporter::write_hdf5_model(check_test::sphere_shell(0.498, 0.996), dir + "/shrunk.h5");
+  r = run("check " + dir + "/shrunk.h5" + surf + " --allow-degenerate --report " + dir + "/shrunk");
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("FAIL: volume: largest material volume difference -0.98"), std::string::npos) << r.out;
+  r = run("check " + dir + "/shrunk.h5" + surf + " --allow-degenerate --volume-limit 2 --report " + dir + "/shrunk2");
+  EXPECT_EQ(r.code, 0) << r.out;
+
   // A folded patch fails with exit code 2.
   auto fold = [](const Eigen::Vector3d& t) { return Eigen::Vector3d(t[0] + 3.0 * t[0] * (1 - t[0]) * t[1], t[1], t[2]); };
   exporter::write_hdf5_model(check_test::single(spline::refine_uniformly(check_test::bezier_patch(fold, {{2, 2, 2}}), 1)),
                              dir + "/fold.h5");
   r = run("check " + dir + "/fold.h5 --report " + dir + "/fold");
   EXPECT_EQ(r.code, 2) << r.out;
-  EXPECT_NE(r.out.find("FAIL: patches 0 "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("FAIL: jacobian: patches 0 "), std::string::npos) << r.out;
   EXPECT_TRUE(std::filesystem::exists(dir + "/fold/report.json"));
 
   // Bad input: a missing model is exit code 1.

@@ -43,7 +43,7 @@ TEST(PelvisStages, WaypointCutAndBlocks) {
   const auto base = igaprep::pipeline::base_stage(c, mid, quiet);
   const auto d = igaprep::pipeline::decompose_stage(c, s, base, quiet);
   EXPECT_EQ(d.layout.rectangles.size(), 31u);
-  const auto v = igaprep::pipeline::param_stage(c, d, quiet);
+  const auto v = igaprep::pipeline::param_stage(c, s, d, quiet);
   EXPECT_EQ(v.blocks.size(), 366u);
   // The blocks' signed volume (folded cells counting negative) against the
   // tet mesh's 175,711 mm^3: 166,730 (-5.1 %) with 31,215 folded sample cells

@@ -143,6 +143,11 @@ void expect_model_meets_every_criterion(const std::string& name, int surfaces, i
   EXPECT_EQ(r.boundary_segments, segments);
   expect_certified(r, 0.2);
   expect_jacobians_raised(r, fitted_below);
+  for (const auto& c : r.report.criteria) EXPECT_TRUE(c.passed) << c.name << ": " << c.summary;
+  // The param stage's sample grids lose no part of the input (block_coverage.h).
+  for (const auto& s : rec.stages)
+    if (s.stage == "param")
+      for (const auto& line : s.details) EXPECT_EQ(line.find("folded"), 0u) << line;
 }
 
 TEST(PipelineModels, Ring2MeetsEveryCriterion) { expect_model_meets_every_criterion("ring2", 2, 8, 16, 0.2); }
@@ -201,10 +206,15 @@ TEST(PipelineModels, AModelOffItsSurfacesFailsTheRunNamingTheFigures) {
       "validation": {"enabled": false}})", "sphere2_coarse");
   igaprep::pipeline::Observer quiet;
   const RunResult r = igaprep::pipeline::run(c, quiet, {"", false});
-  EXPECT_TRUE(r.report.passed) << "every element positive";
+  EXPECT_FALSE(r.report.passed);
   EXPECT_FALSE(r.passed);
+  ASSERT_EQ(r.report.criteria.size(), 5u);
+  EXPECT_EQ(r.report.criteria[0].name, "jacobian");
+  EXPECT_TRUE(r.report.criteria[0].passed) << "every element positive";
   const std::string& verdict = r.report.pipeline->verdict;
-  EXPECT_EQ(verdict.rfind("FAIL: check passed; geometry FAILED (fidelity ", 0), 0u) << verdict;
+  EXPECT_EQ(verdict.rfind("FAIL: check FAILED (fidelity", 0), 0u) << verdict;
+  EXPECT_NE(r.report.verdict.find("fidelity: largest distance between an input surface and the model 2."),
+            std::string::npos) << r.report.verdict;
   EXPECT_GT(figure(r, "fidelity_relative_outer"), 0.005);
 }
 

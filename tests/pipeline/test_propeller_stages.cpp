@@ -55,7 +55,7 @@ TEST(PropellerStages, ThinSidesCutAndBlocks) {
   // they are wide; cut to at most twice the longest interval across
   // (decomposition.max_aspect): 38.
   EXPECT_EQ(d.layout.rectangles.size(), 38u);
-  const auto v = igaprep::pipeline::param_stage(c, d, quiet);
+  const auto v = igaprep::pipeline::param_stage(c, s, d, quiet);
   EXPECT_EQ(v.blocks.size(), 260u);
   // The hub is crossed by M at mid-height and its streamlines fan out: the
   // faces over it are spread (shell_spread.h). The blocks' signed volume

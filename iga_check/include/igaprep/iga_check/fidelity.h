@@ -31,16 +31,42 @@ struct DistanceStats {
   Eigen::Vector3d max_location = Eigen::Vector3d::Zero();    // the sample farthest away
 };
 
+// One spline face standing for a surface: its farthest sample from the mesh.
+struct FaceDistance {
+  int patch = -1;
+  spline::Side side;
+  bool interface = false;  // a material interface (else a labelled boundary side)
+  double max = 0.0;        // model units
+  Eigen::Vector3d max_location = Eigen::Vector3d::Zero();
+};
+
 struct SurfaceFidelity {
   int surface = -1;                  // index into the surface list = model label
   std::string label;                 // the model's label name ("" when absent)
   int boundary_faces = 0, interface_faces = 0;  // spline faces that stand for it
   DistanceStats spline_to_mesh, mesh_to_spline;
+  std::vector<FaceDistance> faces;     // spline -> mesh, per face, in the order of the statistics
+  std::vector<double> vertex_distance;  // mesh -> spline, per mesh vertex (model units)
 };
+
+// A part of an input surface the model does not cover: mesh vertices farther
+// than a limit from the spline faces, connected through mesh edges.
+struct UncoveredRegion {
+  int vertices = 0;
+  double max = 0.0;  // distance of its farthest vertex (model units)
+  Eigen::Vector3d farthest = Eigen::Vector3d::Zero(), centroid = Eigen::Vector3d::Zero();
+};
+
+// The regions of `mesh` whose vertex `distance` exceeds `limit`, farthest first.
+std::vector<UncoveredRegion> uncovered_regions(const mesh::TriMesh& mesh, const std::vector<double>& distance,
+                                               double limit);
 
 // Diagonal of the bounding box of the model's points (evaluated on a 3^3 grid
 // per element, so curved patches are not judged by their control hull).
 double model_diagonal(const spline::MultiPatch& mp);
+
+// Diagonal of the bounding box of a mesh's vertices.
+double mesh_diagonal(const mesh::TriMesh& m);
 
 // Inputs: model, input surfaces (outermost first, index = label), the length
 // that relative distances divide by (model_diagonal when <= 0).

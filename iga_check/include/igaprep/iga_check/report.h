@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "igaprep/iga_check/criteria.h"
 #include "igaprep/iga_check/fidelity.h"
 #include "igaprep/iga_check/jacobian_certificate.h"
 #include "igaprep/iga_check/quality_metrics.h"
@@ -23,6 +24,8 @@ struct CheckOptions {
   QualityOptions quality;
   FidelityOptions fidelity;
   double conformity_tolerance = 1e-9;  // relative to the bounding-box diagonal
+  double fidelity_limit = 0.005;       // largest input-to-model distance, relative to the input's diagonal
+  double volume_limit = 0.005;         // largest |material volume difference|, relative to the input's
   bool allow_degenerate = false;       // degenerate elements pass
   int worst_elements = 10;             // elements listed by smallest certified lower bound
 };
@@ -79,6 +82,7 @@ struct PipelineSection {
 struct CheckReport {
   std::string model;                        // name shown in the report (e.g. the file)
   double diagonal = 0.0;                    // bounding-box diagonal of the model
+  double input_diagonal = 0.0;              // of the outermost input surface (0 without surfaces)
   std::vector<std::string> surface_labels;  // input surfaces, outermost first (may be empty)
   std::vector<std::string> material_names;
   std::vector<ElementCertificate> certificates;  // every element of every patch
@@ -88,10 +92,11 @@ struct CheckReport {
   std::vector<SurfaceFidelity> fidelity;
   TopologyReport topology;
   bool allow_degenerate = false;
-  bool passed = false;            // every element positive (or degenerate when allowed)
-  std::vector<int> failed_patches;
-  std::vector<std::string> warnings;  // topology and volume findings (do not change `passed`)
-  std::string verdict;            // one line, names the failed patches
+  std::vector<Criterion> criteria;  // jacobian, conformity, watertight, fidelity, volume (criteria.h)
+  bool passed = false;            // every criterion passed
+  std::vector<int> failed_patches;    // patches with an element that is not certified positive
+  std::vector<std::string> warnings;  // criteria that could not be checked (do not change `passed`)
+  std::string verdict;            // one line: PASS, or FAIL and every failed criterion
   std::optional<PipelineSection> pipeline;  // set by `igaprep run` only
 };
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "igaprep/iga_check/report.h"
 #include "igaprep/mesh/tetrahedralize.h"
 #include "igaprep/mesh/tri_mesh.h"
 #include "igaprep/param/base_surface.h"
@@ -95,6 +96,7 @@ struct Case {
   spline::BlockFitOptions fit;          // section "fit"
   spline::JacobianOptimizationOptions jacobian;  // section "fit", keys jacobian_*
   std::vector<std::string> export_formats;  // section "export": besides model.h5, in order
+  iga_check::CheckOptions check;            // section "check": fidelity_limit, volume_limit (percent in the file)
   CaseValidation validation;                // section "validation"
   std::optional<CaseLoadCase> load_case;    // section "load_case"
 };

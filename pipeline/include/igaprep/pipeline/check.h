@@ -17,7 +17,8 @@ struct CheckFigures {
   long elements = 0, positive = 0, negative = 0, degenerate = 0, undecided = 0;
   double min_scaled_jacobian = 0.0;
   // Per input surface: the larger of the two max distances (spline -> mesh,
-  // mesh -> spline) over the bounding-box diagonal of that surface.
+  // mesh -> spline) over the bounding-box diagonal of the outermost surface
+  // (the check's fidelity criterion).
   std::vector<double> fidelity;
   std::vector<double> volume_difference;  // per material region, (spline - input) / input
   double interface_gap = 0.0;             // relative to the model's diagonal

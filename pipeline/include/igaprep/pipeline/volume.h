@@ -35,8 +35,11 @@ struct Fit {
 Decomposition decompose_stage(const Case& c, const Surfaces& surfaces, const param::BaseSurface& base,
                               Observer& observer);
 
-// Intermediates offered: decomposition_samples, decomposition_blocks, decomposition_blocks_faces.
-param::VolumeParam param_stage(const Case& c, const Decomposition& d, Observer& observer);
+// Its summary's details name what the blocks leave out of the input surfaces
+// (block_coverage.h): material volumes and uncovered parts beyond the case's
+// check limits. Intermediates offered: decomposition_samples,
+// decomposition_blocks, decomposition_blocks_faces.
+param::VolumeParam param_stage(const Case& c, const Surfaces& surfaces, const Decomposition& d, Observer& observer);
 
 // The blocks fitted, stitched, their interfaces found and sides labelled,
 // then optimize_jacobians when the case's target is above 0.

@@ -1,10 +1,10 @@
 #pragma once
-// printf-style formatting into a string, for the stages' summary lines.
+// printf-style formatting into a string (summary lines and messages).
 #include <cstdarg>
 #include <cstdio>
 #include <string>
 
-namespace igaprep::pipeline {
+namespace igaprep {
 
 __attribute__((format(printf, 1, 2))) inline std::string text(const char* format, ...) {
   va_list args;
@@ -19,4 +19,4 @@ __attribute__((format(printf, 1, 2))) inline std::string text(const char* format
   return out;
 }
 
-}  // namespace igaprep::pipeline
+}  // namespace igaprep

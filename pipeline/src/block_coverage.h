@@ -1,0 +1,21 @@
+#pragma once
+// What the sampled blocks leave out of the input, told by the stage that
+// made them rather than only by the check at the end: per material, the
+// blocks' signed volume (their sample grids' cells, folded ones counting
+// negative) against the volume the input encloses there; on T1, the parts
+// that no block side labelled T1 comes near. The sample grids are piecewise
+// linear, so the limits here are coarser than the check's (block_coverage.cpp).
+#include <string>
+#include <vector>
+
+#include "igaprep/iga_check/report.h"
+#include "igaprep/param/volume_param.h"
+#include "igaprep/pipeline/surfaces.h"
+
+namespace igaprep::pipeline {
+
+// One line per finding (empty when the blocks cover the input).
+std::vector<std::string> block_coverage_findings(const param::VolumeParam& vp, const Surfaces& surfaces,
+                                                 const iga_check::CheckOptions& limits);
+
+}  // namespace igaprep::pipeline

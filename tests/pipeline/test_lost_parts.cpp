@@ -1,0 +1,59 @@
+// A run says where the method lost part of the input, at the stage that lost
+// it: the hand (../shared/models, genus 0), cut by a plane through its palm,
+// keeps its fingers out of the blocks. The param stage names the material's
+// missing volume and the uncovered parts of T1, the fingers first.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <regex>
+#include <string>
+
+#include "igaprep/pipeline/case.h"
+#include "igaprep/pipeline/midsurface.h"
+#include "igaprep/pipeline/surfaces.h"
+#include "igaprep/pipeline/volume.h"
+#include "pipeline_runs.h"
+
+namespace {
+
+TEST(LostParts, TheParamStageNamesTheHandsFingers) {
+  const std::string obj = std::string(IGAPREP_SHARED_MODELS_DIR) + "/hand.obj";
+  if (!std::filesystem::exists(obj)) GTEST_SKIP() << "shared model " << obj << " is absent";
+  const igaprep::pipeline::Case c = igaprep::pipeline::parse_case(
+      R"({"surfaces": [")" + obj + R"("], "validation": {"enabled": false}})", pipeline_test::scratch_dir("hand"),
+      "hand/case.json");
+  pipeline_test::Recorder rec;
+  const igaprep::pipeline::Surfaces s = igaprep::pipeline::load_surfaces(c);
+  const auto mid = igaprep::pipeline::midsurface_stage(c, s, rec);
+  const auto base = igaprep::pipeline::base_stage(c, mid, rec);
+  const auto d = igaprep::pipeline::decompose_stage(c, s, base, rec);
+  igaprep::pipeline::param_stage(c, s, d, rec);
+  ASSERT_EQ(rec.stages.back().stage, "param");
+  const std::vector<std::string>& lines = rec.stages.back().details;
+
+  // 2026-12-02: -19.5 % of the volume; 8 uncovered regions, the largest 775
+  // vertices up to 28.4 % of the diagonal away (a finger's tip).
+  const std::regex volume(R"(the blocks of material 0 differ from the input's volume there by (-[0-9.]+) %)");
+  const std::regex region(
+      R"(blocks leave 'hand' uncovered: ([0-9]+) vertices around \(.*\), the farthest ([0-9.]+) % of the diagonal)");
+  std::smatch m;
+  int regions = 0;
+  double lost_volume = 0.0, farthest = 0.0;
+  for (const std::string& line : lines) {
+    if (std::regex_search(line, m, volume)) lost_volume = std::stod(m[1]);
+    if (std::regex_search(line, m, region)) {
+      ++regions;
+      if (regions == 1) farthest = std::stod(m[2]);
+      EXPECT_GT(std::stoi(m[1]), 0) << line;
+    }
+  }
+  EXPECT_LT(lost_volume, -15.0);
+  EXPECT_GT(lost_volume, -25.0);
+  EXPECT_EQ(regions, 3) << "the three farthest regions, then how many more";
+  EXPECT_GT(farthest, 20.0);
+  EXPECT_LT(farthest, 35.0);
+  EXPECT_NE(lines.back().find("more uncovered regions of 'hand'"), std::string::npos) << lines.back();
+}
+
+}  // namespace

@@ -104,6 +104,25 @@ TEST(CheckCommand, ExitCodesAndReport) {
   r = run("check " + dir + "/shrunk.h5" + surf + " --allow-degenerate --volume-limit 2 --report " + dir + "/shrunk2");
   EXPECT_EQ(r.code, 0) << r.out;
 
+  // A gap at an interface: the conformity criterion fails alone.
+  auto gap = check_test::sphere_shell(0.5, 1.0);
+  gap.patches[0].control_points.row(gap.patches[0].index(2, 2, 1)) *= 1.0 + 1e-4;
+  exporter::write_hdf5_model(gap, dir + "/gap.h5");
+  r = run("check " + dir + "/gap.h5" + surf + " --allow-degenerate --report " + dir + "/gap");
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_EQ(r.out.rfind("FAIL: conformity: largest interface control-point gap 2.89e-05 of the diagonal", 0), 0u) << r.out;
+
+  // A side left without a label: watertight fails (and the fidelity, since
+  // no face stands for that quarter of the outer surface).
+  auto open = check_test::sphere_shell(0.5, 1.0);
+  open.boundaries.pop_back();
+  exporter::write_hdf5_model(open, dir + "/open.h5");
+  r = run("check " + dir + "/open.h5" + surf + " --allow-degenerate --report " + dir + "/open");
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("watertight: 1 sides neither an interface, a labelled boundary nor collapsed"),
+            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("patch 3 side 6 is neither an interface nor a labelled boundary"), std::string::npos) << r.out;
+
   // A folded patch fails with exit code 2.
   auto fold = [](const Eigen::Vector3d& t) { return Eigen::Vector3d(t[0] + 3.0 * t[0] * (1 - t[0]) * t[1], t[1], t[2]); };
   exporter::write_hdf5_model(check_test::single(spline::refine_uniformly(check_test::bezier_patch(fold, {{2, 2, 2}}), 1)),

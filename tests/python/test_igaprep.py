@@ -107,6 +107,19 @@ def test_check_of_the_returned_model_agrees_with_the_run(sphere2):
     assert again["passed"]
     assert again["summary"]["elements"] == report["check"]["summary"]["elements"]
     assert again["quality"]["scaled_jacobian"]["min"] == report["check"]["quality"]["scaled_jacobian"]["min"]
+    criteria = {c["name"]: c for c in again["summary"]["criteria"]}
+    assert not criteria["fidelity"]["checked"] and criteria["fidelity"]["passed"]  # no surfaces given
+
+
+def test_check_fidelity_limit_decides_the_verdict(sphere2):
+    model, report, _, _ = sphere2
+    surfaces = [igaprep.read_surface(os.path.join(MODELS, "sphere2", f)) for f in ("outer.off", "inner.off")]
+    fidelity = {c["name"]: c for c in report["check"]["summary"]["criteria"]}["fidelity"]["value"]
+    assert 0.0 < fidelity < 0.005
+    assert igaprep.check(model, surfaces)["passed"]
+    tight = igaprep.check(model, surfaces, fidelity_limit=50.0 * fidelity)  # percent: half the figure
+    assert not tight["passed"]
+    assert tight["summary"]["verdict"].startswith("FAIL: fidelity: ")
 
 
 def test_written_model_reads_back_bit_for_bit(sphere2, tmp_path):

@@ -2,6 +2,7 @@
 
 #include <tetgen.h>
 
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -85,6 +86,7 @@ TetgenOutput run_tetgen(tetgenio& in, const std::string& switches, bool echo, co
   }
   std::fflush(stdout);
   std::fflush(stderr);
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) {
     ::close(fds[0]);
@@ -93,7 +95,10 @@ TetgenOutput run_tetgen(tetgenio& in, const std::string& switches, bool echo, co
     throw internal_error(what + ": cannot fork for TetGen: " + std::strerror(errno));
   }
   if (pid == 0) {
-    // Child: TetGen's stdout goes to the log; results go to the pipe.
+    // Child: dies with its parent (a SIGKILL of igaprep, a CI timeout), also
+    // when the parent died before the request took effect.
+    if (::prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || ::getppid() != parent) ::_exit(1);
+    // TetGen's stdout goes to the log; results go to the pipe.
     ::close(fds[0]);
     ::dup2(fileno(log), 1);
     // Unbuffered, so that TetGen's last words survive a crash.

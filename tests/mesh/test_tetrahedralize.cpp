@@ -1,12 +1,18 @@
 // TetGen on nested shells (tetrahedralize.h).
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cstdio>
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <map>
 #include <string>
 #include <vector>
@@ -253,4 +259,70 @@ TEST(Tetrahedralize, PelvisWithCorticalShell) {
   const std::vector<TriMesh> shells{outer, igaprep::mesh::offset_inward(outer, {0.8})};
   const TetMesh tm = igaprep::mesh::tetrahedralize(shells);
   check_tet_mesh(tm, shells, {});
+}
+
+namespace {
+
+// The children of `pid` (from /proc/*/stat: "pid (comm) state ppid ...").
+std::vector<int> children_of(int pid) {
+  std::vector<int> out;
+  for (const auto& e : std::filesystem::directory_iterator("/proc")) {
+    const std::string name = e.path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream in(e.path() / "stat");
+    std::string stat;
+    std::getline(in, stat);
+    const std::size_t close = stat.rfind(')');
+    if (close == std::string::npos) continue;
+    std::istringstream rest(stat.substr(close + 2));
+    char state = 0;
+    int ppid = 0;
+    rest >> state >> ppid;
+    if (ppid == pid) out.push_back(std::stoi(name));
+  }
+  return out;
+}
+
+// Running, not a zombie or gone.
+bool alive(int pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string stat;
+  if (!std::getline(in, stat)) return false;
+  const std::size_t close = stat.rfind(')');
+  return close != std::string::npos && close + 2 < stat.size() && stat[close + 2] != 'Z' && stat[close + 2] != 'X';
+}
+
+}  // namespace
+
+// Issue 21, item 3: a SIGKILL of the process that runs TetGen (a scheduler,
+// a CI timeout) takes the forked worker with it.
+TEST(Tetrahedralize, TheWorkerDiesWithItsParent) {
+  const pid_t runner = ::fork();
+  ASSERT_GE(runner, 0);
+  if (runner == 0) {
+    igaprep::mesh::TetgenOptions opt;
+    opt.max_volume = 1e-9;  // minutes of refinement
+    try {
+      igaprep::mesh::tetrahedralize({igaprep::models::make_ellipsoid(1, 1, 1, 3)}, {}, opt);
+    } catch (...) {
+    }
+    ::_exit(0);
+  }
+  std::vector<int> workers;
+  for (int i = 0; i < 200 && workers.empty(); ++i) {
+    ::usleep(20000);
+    workers = children_of(runner);
+  }
+  ASSERT_EQ(workers.size(), 1u) << "no TetGen worker appeared";
+  ::usleep(200000);
+  ASSERT_TRUE(alive(workers[0]));
+  ::kill(runner, SIGKILL);
+  ::waitpid(runner, nullptr, 0);
+  bool gone = false;
+  for (int i = 0; i < 150 && !gone; ++i) {
+    gone = !alive(workers[0]);
+    if (!gone) ::usleep(20000);
+  }
+  EXPECT_TRUE(gone) << "TetGen worker " << workers[0] << " outlived its parent";
+  if (!gone) ::kill(workers[0], SIGKILL);
 }

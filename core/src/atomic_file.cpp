@@ -1,39 +1,90 @@
 #include "igaprep/core/atomic_file.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <ext/stdio_filebuf.h>
+#include <filesystem>
 #include <fstream>
+#include <vector>
 
 #include "igaprep/core/error.h"
 
 namespace igaprep {
 
 namespace {
-std::string temporary_name(const std::string& path) {
-  return path + ".tmp" + std::to_string(static_cast<long>(getpid()));
+
+// The process's umask without changing it (umask(2) would, for all threads).
+mode_t current_umask() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("Umask:", 0) == 0) return static_cast<mode_t>(std::stoul(line.substr(6), nullptr, 8));
+  return 022;
 }
+
+// A file beside `path` that did not exist before (mkostemp: O_CREAT|O_EXCL,
+// so never through a planted symlink) under a name no one can predict, with
+// the permissions an ordinary new file gets.
+int create_temporary(const std::string& path, std::string& name) {
+  std::vector<char> pattern(path.begin(), path.end());
+  for (char c : std::string(".tmpXXXXXX")) pattern.push_back(c);
+  pattern.push_back('\0');
+  const int fd = ::mkostemp(pattern.data(), O_CLOEXEC);
+  if (fd < 0) throw bad_input("cannot write '" + path + "': cannot create a file in that folder: " + std::strerror(errno));
+  name = pattern.data();
+  if (::fchmod(fd, 0666 & ~current_umask()) != 0) {
+    ::close(fd);
+    std::remove(name.c_str());
+    throw bad_input("cannot write '" + path + "': cannot set the permissions of a new file: " + std::strerror(errno));
+  }
+  return fd;
+}
+
+// Makes a rename durable: the folder's entry reaches the disk.
+void sync_folder_of(const std::string& path) {
+  std::string folder = std::filesystem::path(path).parent_path().string();
+  if (folder.empty()) folder = ".";
+  const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;  // the file itself is synced; some file systems refuse folders
+  ::fsync(fd);
+  ::close(fd);
+}
+
 }  // namespace
 
-AtomicPath::AtomicPath(std::string path) : path_(std::move(path)), temp_(temporary_name(path_)) {}
+AtomicPath::AtomicPath(std::string path) : path_(std::move(path)) { fd_ = create_temporary(path_, temp_); }
 
 AtomicPath::~AtomicPath() {
+  if (fd_ >= 0) ::close(fd_);
   if (!committed_) std::remove(temp_.c_str());
 }
 
 void AtomicPath::commit() {
-  if (std::rename(temp_.c_str(), path_.c_str()) != 0) {
+  // The contents reach the disk before the name does: after a power loss the
+  // final name holds the old file or the whole new one, never an empty one.
+  const bool synced = ::fsync(fd_) == 0;
+  if (!synced || std::rename(temp_.c_str(), path_.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
     std::remove(temp_.c_str());
-    throw bad_input("cannot write '" + path_ + "': rename from temporary file failed");
+    throw bad_input("cannot write '" + path_ + "': " + (synced ? "rename from temporary file failed: " : "sync failed: ") +
+                    why);
   }
   committed_ = true;
+  sync_folder_of(path_);
 }
 
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write, bool binary) {
   AtomicPath target(path);
   {
-    std::ofstream out(target.temp_path(), binary ? std::ios::binary | std::ios::out : std::ios::out);
-    if (!out) throw bad_input("cannot write '" + path + "': cannot open a file in that folder");
+    // Through the descriptor mkostemp opened, not the name.
+    const int fd = ::dup(target.descriptor());
+    if (fd < 0) throw bad_input("cannot write '" + path + "': " + std::strerror(errno));
+    __gnu_cxx::stdio_filebuf<char> buffer(fd, binary ? std::ios::binary | std::ios::out : std::ios::out);
+    std::ostream out(&buffer);
     write(out);
     out.flush();
     if (!out) throw bad_input("cannot write '" + path + "': write failed (disk full?)");

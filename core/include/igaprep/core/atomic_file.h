@@ -1,6 +1,8 @@
 #pragma once
 // Writing files so that a failure never leaves a half-written output
-// (ARCHITECTURE.md): write to a temporary name beside the target, then rename.
+// (ARCHITECTURE.md): write to a new temporary file beside the target (created
+// with O_EXCL under an unpredictable name, so never through a planted
+// symlink), sync it, rename it into place, sync the folder.
 #include <functional>
 #include <ostream>
 #include <string>
@@ -13,9 +15,11 @@ namespace igaprep {
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
                            bool binary = false);
 
-// For libraries that write by file name (HDF5, TetGen): returns a temporary
-// name next to `path`; call commit() after a successful write to rename it
-// into place. The destructor removes the temporary if commit() was not called.
+// For libraries that write by file name (HDF5): creates the empty temporary
+// file next to `path` (they then truncate it); call commit() after a
+// successful write to sync it and rename it into place. The destructor
+// removes the temporary if commit() was not called. Throws bad_input when
+// the folder does not take a new file.
 class AtomicPath {
  public:
   explicit AtomicPath(std::string path);
@@ -23,11 +27,13 @@ class AtomicPath {
   AtomicPath(const AtomicPath&) = delete;
   AtomicPath& operator=(const AtomicPath&) = delete;
   const std::string& temp_path() const { return temp_; }
+  int descriptor() const { return fd_; }  // the temporary file, open for writing
   void commit();
 
  private:
   std::string path_;
   std::string temp_;
+  int fd_ = -1;
   bool committed_ = false;
 };
 

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "igaprep/core/file_identity.h"
 #include "igaprep/core/error.h"
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/iga_check/report.h"
@@ -25,6 +26,11 @@ struct CheckArgs {
 };
 
 int run_check(const CheckArgs& a, const CheckLimitFlags& limits) {
+  std::vector<std::string> inputs = a.surfaces;
+  inputs.push_back(a.model);
+  if (!a.case_file.empty()) inputs.push_back(a.case_file);
+  refuse_replacing_inputs(inputs, {(std::filesystem::path(a.report_dir) / "report.json").string(),
+                                   (std::filesystem::path(a.report_dir) / "report.html").string()});
   const spline::MultiPatch mp = exporter::read_hdf5_model(a.model);
   std::vector<mesh::TriMesh> meshes;
   std::vector<std::string> labels;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "commands.h"
+#include "igaprep/core/file_identity.h"
 #include "igaprep/export/export_model.h"
 #include "igaprep/export/hdf5_model.h"
 
@@ -23,6 +24,9 @@ void add_export_command(CLI::App& app) {
   set_body(sub, [=] {
     // Formats first: a typo is reported before any file is read or written.
     const std::vector<exporter::Format> list = exporter::parse_formats(*formats);
+    std::vector<std::string> outputs;
+    for (const exporter::Format f : list) outputs.push_back(*basename + exporter::format_extension(f));
+    refuse_replacing_inputs({*model}, outputs);
     const spline::MultiPatch mp = exporter::read_hdf5_model(*model);
     for (const std::string& path : exporter::export_model(mp, *basename, list)) std::cout << "wrote " << path << "\n";
     return 0;

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "igaprep/core/file_identity.h"
 #include "igaprep/core/error.h"
 #include "igaprep/mesh/check_surface.h"
 #include "igaprep/mesh/offset_surface.h"
@@ -23,6 +24,7 @@ void add_offset_command(CLI::App& app) {
   sub->add_option("-o,--output", args->output, "output surface (.stl, .obj or .off)")->required();
   set_body(sub, [args] {
     if (!(args->inward > 0.0)) throw bad_input("--inward must be a positive distance");
+    refuse_replacing_inputs({args->input}, {args->output});
     const auto start = std::chrono::steady_clock::now();
     mesh::TriMesh surface = mesh::load_checked_surface(args->input);
     mesh::OffsetOptions options;

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "commands.h"
+#include "igaprep/core/file_identity.h"
 #include "igaprep/core/error.h"
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/iga_check/elasticity_solve.h"
@@ -75,6 +76,7 @@ std::pair<std::string, std::string> split_assignment(const std::string& s, const
 }
 
 int run_solve(const SolveArgs& a) {
+  refuse_replacing_inputs({a.model}, {a.output});
   iga_check::ElasticityProblem problem;
   for (const auto& s : a.fix) problem.fixed.push_back(parse_fix(s));
   for (const auto& s : a.pressure) {

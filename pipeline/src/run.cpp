@@ -4,6 +4,8 @@
 #include <filesystem>
 
 #include "igaprep/core/error.h"
+#include "igaprep/core/file_identity.h"
+#include "igaprep/export/export_model.h"
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/pipeline/check.h"
 #include "igaprep/pipeline/export.h"
@@ -149,11 +151,27 @@ StageSummary validate_summary(const Surfaces& s, double seconds) {
   return {"validate", seconds, line, {}};
 }
 
+// The case file and its surfaces are never among the files a run writes.
+void refuse_replacing_case_files(const Case& c, const std::string& output_dir) {
+  std::vector<std::string> inputs;
+  if (!c.path.empty()) inputs.push_back(c.path);
+  for (const CaseSurface& s : c.surfaces)
+    if (!s.file.empty()) inputs.push_back(s.file);
+  std::vector<std::string> outputs;
+  for (const char* name : {"model.h5", "report.json", "report.html", "result.h5"})
+    outputs.push_back((fs::path(output_dir) / name).string());
+  for (const std::string& format : c.export_formats)
+    outputs.push_back((fs::path(output_dir) / ("model" + exporter::format_extension(exporter::parse_formats(format).at(0))))
+                          .string());
+  refuse_replacing_inputs(inputs, outputs);
+}
+
 }  // namespace
 
 RunResult run(const Case& c, Observer& outer, const RunOptions& o) {
   RunResult r;
   r.output_dir = o.output_dir.empty() ? c.output_dir : o.output_dir;
+  if (o.write_outputs) refuse_replacing_case_files(c, r.output_dir);
   std::vector<iga_check::PipelineStage> stages;
   StageRecorder observer(outer, stages);
 

@@ -122,4 +122,31 @@ TEST(CaseCli, OffsetTooDeepNamesTheInputFile) {
   EXPECT_FALSE(fs::exists(std::string(IGAPREP_BINARY_DIR) + "/tests/cli_scratch/too_deep.off"));
 }
 
+// Issue 21, item 2: an output that is one of the inputs (by file identity:
+// the same name, a hard link or a symlink) is refused before any work, and
+// the input is left as it was.
+TEST(CaseCli, AnOutputThatIsTheInputIsRefused) {
+  const std::string dir = scratch_dir("replace_input");
+  const std::string surface = dir + "/x.off";
+  fs::copy_file(models_dir() + "/ring2/outer.off", surface);
+  fs::create_symlink(surface, dir + "/link.off");
+  const std::string before = read_all(surface);
+  for (const std::string& out : {surface, dir + "/link.off", dir + "/../replace_input/x.off"}) {
+    const auto r = run_cli("offset " + surface + " --inward 0.05 -o " + out);
+    EXPECT_EQ(r.exit_code, 1) << r.out;
+    EXPECT_NE(r.out.find("is the input '" + surface + "' (the same file)"), std::string::npos) << r.out;
+  }
+  EXPECT_EQ(read_all(surface), before);
+
+  // A run whose output folder would take its case file's name.
+  const std::string case_dir = scratch_dir("replace_case");
+  const std::string case_path = case_dir + "/report.json";
+  std::ofstream(case_path) << "{" << surfaces_key() << R"(, "output": ".", "validation": {"enabled": false}})";
+  const std::string case_text = read_all(case_path);
+  const auto r = run_cli("run " + case_path);
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("output '" + case_dir + "/report.json' is the input"), std::string::npos) << r.out;
+  EXPECT_EQ(read_all(case_path), case_text);
+}
+
 }  // namespace

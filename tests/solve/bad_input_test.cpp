@@ -169,6 +169,15 @@ TEST_F(SolveCli, ResultFileCarriesTheSolution) {
   }
 }
 
+// Issue 21, item 2: `solve b.h5 -o b.h5` refuses and keeps the model.
+TEST_F(SolveCli, AnOutputThatIsTheModelIsRefused) {
+  const auto before = fs::file_size(model_);
+  EXPECT_EQ(run("--fix base --traction end=1,0,0", model_), 1) << log();
+  EXPECT_NE(log().find("is the input '" + model_ + "' (the same file)"), std::string::npos) << log();
+  EXPECT_EQ(fs::file_size(model_), before);
+  EXPECT_FALSE(exporter::read_hdf5_model(model_).has_solution);
+}
+
 TEST_F(SolveCli, BadInputExitsOneAndWritesNothing) {
   const std::vector<std::string> bad = {
       "--fix base:x --traction end=1,0,0",   // singular

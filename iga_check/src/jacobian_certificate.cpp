@@ -226,6 +226,16 @@ ElementCertificate certify_element(const spline::BezierElement& e, const std::ar
   double leaf_min = std::numeric_limits<double>::infinity();
   bool negative = false, undecided = false, degenerate = false;
 
+  if (!std::all_of(N.coeffs.begin(), N.coeffs.end(), [](double x) { return std::isfinite(x); })) {
+    // det J overflows (control points near the largest double): its sign is
+    // unknown, so never positive nor degenerate.
+    cert.status = ElementStatus::Undecided;
+    cert.lower_bound = -std::numeric_limits<double>::infinity();
+    cert.upper_bound = std::numeric_limits<double>::quiet_NaN();
+    cert.location = to_patch(Eigen::Vector3d::Constant(0.5));
+    cert.boxes = 1;
+    return cert;
+  }
   std::priority_queue<Box, std::vector<Box>, BoxOrder> queue;
   Box root{N, Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones(), 0, min_coeff(N)};
   const double maxabs = std::max(std::abs(root.minc), std::abs(*std::max_element(N.coeffs.begin(), N.coeffs.end())));

@@ -9,6 +9,7 @@
 #include "check/check_models.h"
 #include "igaprep/core/error.h"
 #include "igaprep/iga_check/jacobian_certificate.h"
+#include "igaprep/iga_check/report.h"
 #include "igaprep/spline/bezier_extraction.h"
 #include "igaprep/spline/evaluate.h"
 #include "igaprep/spline/refine.h"
@@ -227,4 +228,26 @@ TEST(JacobianCertificate, InteriorZeroIsUndecidedNotDegenerate) {
   auto flat = [](const Eigen::Vector3d& t) { return Eigen::Vector3d(t[0], t[1], 0.0); };
   const auto flat_certs = certify_patch(bezier_patch(flat, {{1, 1, 1}}), 0);
   EXPECT_EQ(flat_certs[0].status, ElementStatus::Undecided);
+}
+
+// Issue 21, item 5: control points near the largest double make det J
+// overflow; such an element is undecided (it fails), never degenerate, so
+// --allow-degenerate cannot pass it.
+TEST(JacobianCertificate, AnOverflowingJacobianIsUndecidedNotDegenerate) {
+  spline::MultiPatch mp =
+      check_test::single(spline::refine_uniformly(bezier_patch(check_test::twisted, {{3, 3, 3}}), 1));
+  mp.patches[0].control_points *= 1e307;
+  const auto certs = certify_patch(mp.patches[0], 0);
+  ASSERT_EQ(certs.size(), 8u);
+  for (const auto& c : certs) EXPECT_EQ(c.status, ElementStatus::Undecided) << to_string(c.status);
+  CheckOptions opt;
+  opt.allow_degenerate = true;
+  const CheckReport r = build_check_report(mp, {}, {}, opt, "huge");
+  EXPECT_FALSE(r.passed);
+  EXPECT_EQ(r.verdict.rfind("FAIL: jacobian: patches 0 not certified positive (0 negative, 0 degenerate allowed, 8 "
+                            "undecided elements)",
+                            0),
+            0u)
+      << r.verdict;
+  EXPECT_NE(report_json(r).find("\"lower_bound\": null"), std::string::npos);
 }

@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "igaprep/core/error.h"
+#include "igaprep/iga_check/fidelity.h"
+#include "igaprep/iga_check/report.h"
 #include "igaprep/spline/multipatch_topology.h"
 
 namespace igaprep::iga_check::detail {
@@ -58,6 +60,16 @@ void check_loads_finite(const ElasticityProblem& problem) {
 
 }  // namespace
 
+// Interfaces glue control points by index: they must coincide, to the
+// tolerance of the check's conformity criterion (criteria.h).
+void check_interfaces_conform(const spline::MultiPatch& mp) {
+  const double tol = CheckOptions{}.conformity_tolerance * model_diagonal(mp);
+  const spline::ConformityReport c = spline::check_conformity(mp, tol);
+  if (!c.conforming)
+    throw bad_input("the model's interfaces do not conform (" + c.problems.front() +
+                    "): a solve would glue control points that do not coincide; igaprep check names every such interface");
+}
+
 std::vector<spline::BoundarySide> sides_with_label(const spline::MultiPatch& mp, const std::string& name,
                                                    const char* what) {
   const int label = find_label(mp, name, what);
@@ -75,6 +87,7 @@ std::vector<LameParameters> check_elasticity_input(const spline::MultiPatch& mp,
   if (options.extra_quadrature < 0 || options.extra_quadrature > 10)
     throw bad_input("extra quadrature points must lie in 0..10");
   std::vector<LameParameters> lame = check_materials(mp);
+  check_interfaces_conform(mp);
   check_conditions(mp, problem);
   check_loads_finite(problem);
   return lame;

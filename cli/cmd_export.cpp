@@ -6,7 +6,7 @@
 #include <string>
 
 #include "commands.h"
-#include "igaprep/core/file_identity.h"
+#include "igaprep/core/input_files.h"
 #include "igaprep/export/export_model.h"
 #include "igaprep/export/hdf5_model.h"
 

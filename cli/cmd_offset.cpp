@@ -3,7 +3,7 @@
 #include <iostream>
 
 #include "commands.h"
-#include "igaprep/core/file_identity.h"
+#include "igaprep/core/input_files.h"
 #include "igaprep/core/error.h"
 #include "igaprep/mesh/check_surface.h"
 #include "igaprep/mesh/offset_surface.h"

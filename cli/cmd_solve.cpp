@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "commands.h"
-#include "igaprep/core/file_identity.h"
+#include "igaprep/core/input_files.h"
 #include "igaprep/core/error.h"
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/iga_check/elasticity_solve.h"

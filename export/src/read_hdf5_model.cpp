@@ -9,6 +9,7 @@
 
 #include "hdf5_handle.h"
 #include "igaprep/core/error.h"
+#include "igaprep/core/input_files.h"
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/spline/knot_vector.h"
 #include "model_checks.h"
@@ -401,6 +402,7 @@ spline::MultiPatch read_model(Reader& r) {
 }  // namespace
 
 spline::MultiPatch read_hdf5_model(const std::string& path) {
+  require_regular_file(path, "model file");
   detail::SilenceHdf5Errors quiet;
   Reader r(path);
   r.open();

@@ -292,6 +292,15 @@ void measure_genus_and_volume(const TriMesh& m, int edges, const detail::Surface
       volume[static_cast<std::size_t>(c)] = -volume[static_cast<std::size_t>(c)];
     }
   r.volume = std::accumulate(volume.begin(), volume.end(), 0.0);
+  // Coordinates near the largest double overflow the volume; near the
+  // smallest, it underflows to nothing: no later step can use such a solid.
+  const Eigen::Vector3d size = r.bbox_max - r.bbox_min;
+  if (!std::isfinite(r.volume))
+    add_error(r, "its enclosed volume overflows (coordinates up to " + std::to_string(size.cwiseAbs().maxCoeff()) +
+                     " apart): scale the model");
+  else if (!(r.volume > 1e-12 * size[0] * size[1] * size[2]) || !(r.volume > 0.0))
+    add_error(r, "it encloses no volume (" + std::to_string(r.volume) +
+                     "): a flat surface, or coordinates too small to compute with; scale the model");
 }
 
 // ---- step 8: self-intersections

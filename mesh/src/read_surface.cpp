@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "igaprep/core/error.h"
+#include "igaprep/core/input_files.h"
 
 namespace igaprep::mesh {
 
@@ -607,8 +608,7 @@ class Reader {
 }  // namespace
 
 TriMesh read_surface(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw bad_input(path + ": is a folder, not a surface file");
+  require_regular_file(path, "surface file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw bad_input(path + ": cannot open the file (missing or not readable)");
   std::ostringstream buffer;

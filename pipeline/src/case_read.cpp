@@ -10,6 +10,7 @@
 #include "case_sections.h"
 #include "json_reader.h"
 #include "igaprep/core/error.h"
+#include "igaprep/core/input_files.h"
 #include "igaprep/export/export_model.h"
 #include "igaprep/models/builtin_models.h"
 
@@ -65,6 +66,11 @@ CaseSurface read_surface_entry(const json& entry, int index, const fs::path& fol
     const fs::path resolved = fs::path(s.file).is_absolute() ? fs::path(s.file) : folder / s.file;
     if (!fs::exists(resolved))
       throw bad_input(file + ": '" + where + "' names a file that does not exist: " + resolved.string());
+    try {
+      require_regular_file(resolved.string(), "surface file");
+    } catch (const Error& e) {
+      throw bad_input(file + ": '" + where + "': " + e.what());
+    }
     s.file = resolved.lexically_normal().string();
     if (s.label.empty()) s.label = fs::path(s.file).stem().string();
   }
@@ -256,6 +262,37 @@ void check_load_case_labels(const Case& c, const ObjectReader& r) {
     known(lc.traction[i].where, "load_case.traction[" + std::to_string(i) + "]");
 }
 
+// nlohmann keeps the last of repeated keys without a word (two "surfaces"
+// would give a one-surface model): refuse them, naming the key. Its own
+// errors (syntax, a number such as 1e400 that overflows) become bad input.
+json parse_json_refusing_repeated_keys(const std::string& text, const std::string& source) {
+  std::vector<std::set<std::string>> keys;  // of each object being read
+  const json::parser_callback_t refuse_repeated = [&](int, json::parse_event_t event, json& parsed) {
+    if (event == json::parse_event_t::object_start) keys.emplace_back();
+    if (event == json::parse_event_t::object_end) keys.pop_back();
+    if (event == json::parse_event_t::key && !keys.back().insert(parsed.get<std::string>()).second)
+      throw bad_input(source + ": key '" + parsed.get<std::string>() +
+                      "' appears twice in one object (JSON keeps only the last; remove one)");
+    return true;
+  };
+  try {
+    return json::parse(text, refuse_repeated);
+  } catch (const json::exception& e) {
+    std::string what = e.what();
+    const std::size_t cut = what.find("] ");  // "[json.exception.parse_error.101] ..."
+    throw bad_input(source + ": not valid JSON: " + (cut == std::string::npos ? what : what.substr(cut + 2)));
+  }
+}
+
+// Labels name the boundary groups of the model (load cases, exports).
+void refuse_repeated_labels(const std::vector<CaseSurface>& surfaces, const ObjectReader& r) {
+  for (std::size_t i = 0; i < surfaces.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (surfaces[i].label == surfaces[j].label)
+        r.fail("'surfaces[" + std::to_string(i) + "]' has the label '" + surfaces[i].label + "' of 'surfaces[" +
+               std::to_string(j) + "]': each surface needs its own label");
+}
+
 // The stage sections, each optional.
 void read_sections(ObjectReader& r, const std::string& file, Case& c) {
   if (const json* t = r.find("tetmesh")) c.tetmesh = read_tetmesh(*t, file);
@@ -275,12 +312,7 @@ void read_sections(ObjectReader& r, const std::string& file, Case& c) {
 }  // namespace
 
 Case parse_case(const std::string& json_text, const std::string& folder_name, const std::string& source) {
-  json root;
-  try {
-    root = json::parse(json_text);
-  } catch (const json::parse_error& e) {
-    throw bad_input(source + ": not valid JSON: " + e.what());
-  }
+  const json root = parse_json_refusing_repeated_keys(json_text, source);
   const fs::path folder = fs::absolute(fs::path(folder_name.empty() ? "." : folder_name)).lexically_normal();
   Case c;
   c.text = json_text;
@@ -292,6 +324,7 @@ Case parse_case(const std::string& json_text, const std::string& folder_name, co
     r.fail("'surfaces' must be a non-empty list (outermost surface first)");
   for (std::size_t i = 0; i < surfaces->size(); ++i)
     c.surfaces.push_back(read_surface_entry((*surfaces)[i], static_cast<int>(i), folder, source));
+  refuse_repeated_labels(c.surfaces, r);
   c.materials = read_materials(r, c.surfaces.size(), source);
   c.output_dir = (folder / r.string("output", "output")).lexically_normal().string();
   read_sections(r, source, c);
@@ -300,6 +333,7 @@ Case parse_case(const std::string& json_text, const std::string& folder_name, co
 }
 
 Case read_case(const std::string& path) {
+  require_regular_file(path, "case file");
   std::ifstream in(path);
   if (!in) throw bad_input("cannot read case file '" + path + "'");
   std::stringstream text;

@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "igaprep/core/error.h"
-#include "igaprep/core/file_identity.h"
+#include "igaprep/core/input_files.h"
 #include "igaprep/export/export_model.h"
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/pipeline/check.h"
@@ -166,12 +166,25 @@ void refuse_replacing_case_files(const Case& c, const std::string& output_dir) {
   refuse_replacing_inputs(inputs, outputs);
 }
 
+// Before any work: an output folder that cannot be made would otherwise
+// fail only at the end, after minutes.
+void prepare_output_folder(const std::string& dir) {
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw bad_input("output folder '" + dir + "' is an existing file, not a folder");
+  fs::create_directories(dir, ec);
+  if (ec) throw bad_input("cannot create the output folder '" + dir + "': " + ec.message());
+}
+
 }  // namespace
 
 RunResult run(const Case& c, Observer& outer, const RunOptions& o) {
   RunResult r;
   r.output_dir = o.output_dir.empty() ? c.output_dir : o.output_dir;
-  if (o.write_outputs) refuse_replacing_case_files(c, r.output_dir);
+  if (o.write_outputs) {
+    refuse_replacing_case_files(c, r.output_dir);
+    prepare_output_folder(r.output_dir);
+  }
   std::vector<iga_check::PipelineStage> stages;
   StageRecorder observer(outer, stages);
 

@@ -149,4 +149,16 @@ TEST(CaseCli, AnOutputThatIsTheInputIsRefused) {
   EXPECT_EQ(read_all(case_path), case_text);
 }
 
+// Issue 21, item 9: an output folder that is an existing file is bad input,
+// said before any work (it used to end the run with an internal failure).
+TEST(CaseCli, AnOutputFolderThatIsAFileIsRefusedFirst) {
+  const std::string dir = scratch_dir("output_is_file");
+  const std::string file = dir + "/taken";
+  std::ofstream(file) << "x";
+  const auto r = run_cli("run " + write_case(dir, "{" + surfaces_key() + "}") + " -o " + file);
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("output folder '" + file + "' is an existing file, not a folder"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("midsurface"), std::string::npos) << "work was done: " << r.out;
+}
+
 }  // namespace

@@ -2,6 +2,8 @@
 // the file; reports (genus, volume, flags) on good and real surfaces.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -264,4 +266,40 @@ TEST(CheckSharedModelCounts, MatchTheReadme) {
     EXPECT_EQ(r.vertices, e.v) << e.file;
     EXPECT_EQ(r.faces, e.f) << e.file;
   }
+}
+
+// Issue 21, item 7: a solid whose volume overflows (coordinates near 1e300)
+// or underflows (near 1e-300) is a defect, not a surface with volume -nan or 0.
+TEST(CheckSurfaceDefects, AVolumeThatOverflowsOrVanishesIsADefect) {
+  const TriMesh torus = grid_torus(24, 12);
+  for (const double scale : {1e110, 1e-110}) {
+    TriMesh m = torus;
+    m.V *= scale;
+    const SurfaceReport r = check_surface(m, "scaled.off");
+    ASSERT_EQ(r.errors.size(), 1u) << scale << ": " << igaprep::mesh::format_report(r);
+    EXPECT_TRUE(contains(r.errors[0], scale > 1 ? "scaled.off: its enclosed volume overflows"
+                                                : "scaled.off: it encloses no volume"))
+        << r.errors[0];
+  }
+  TriMesh fine = torus;
+  fine.V *= 1e-3;
+  EXPECT_TRUE(check_surface(fine, "small.off").ok());
+}
+
+// Issue 21, item 11: a FIFO or a device is refused before it is read (it
+// would block or never end).
+TEST(CheckSurfaceDefects, AFifoOrADeviceIsNotReadAsASurface) {
+  const std::string fifo = std::string(IGAPREP_BINARY_DIR) + "/test_surface.fifo.stl";
+  std::filesystem::remove(fifo);
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  for (const std::string& path : {fifo, std::string("/dev/zero")}) {
+    try {
+      read_surface(path);
+      ADD_FAILURE() << path << " was read";
+    } catch (const igaprep::Error& e) {
+      EXPECT_EQ(e.kind(), igaprep::ErrorKind::BadInput);
+      EXPECT_TRUE(contains(e.what(), path + ": is not a regular file")) << e.what();
+    }
+  }
+  std::filesystem::remove(fifo);
 }

@@ -105,6 +105,38 @@ TEST(Case, SurfacesAndMaterialsAreChecked) {
   EXPECT_NE(refusal("{not json").find("case.json: not valid JSON"), std::string::npos);
 }
 
+// Issue 21, items 9, 10 and 11: what JSON and the file system allow but a
+// case must not be.
+TEST(Case, RepeatedKeysLabelsHugeNumbersAndNonRegularFilesAreRefused) {
+  // Two "surfaces" keys: JSON keeps the last without a word.
+  EXPECT_NE(refusal(R"({"surfaces": ["a.off"], "surfaces": ["outer.off"]})")
+                .find("case.json: key 'surfaces' appears twice in one object"),
+            std::string::npos);
+  EXPECT_NE(refusal(sphere2_case(R"(, "fit": {"elements": 3, "elements": 4})")).find("key 'elements' appears twice"),
+            std::string::npos);
+  // The same key in two objects is fine.
+  EXPECT_EQ(refusal(sphere2_case(R"(, "validation": {"enabled": false}, "check": {"fidelity_limit": 1})")), "");
+  // Two surfaces with one label.
+  const std::string m = models_dir() + "/sphere2/";
+  EXPECT_NE(refusal(R"({"surfaces": [{"file": ")" + m + R"(outer.off", "label": "skin"}, {"file": ")" + m +
+                    R"(inner.off", "label": "skin"}]})")
+                .find("'surfaces[1]' has the label 'skin' of 'surfaces[0]': each surface needs its own label"),
+            std::string::npos);
+  // A number that overflows a double is bad input naming the file.
+  EXPECT_NE(refusal(sphere2_case(R"(, "tetmesh": {"max_volume": 1e400})")).find("case.json: not valid JSON: "),
+            std::string::npos);
+  // A folder, a FIFO or a device as the case file or a surface.
+  const std::string dir = pipeline_test::scratch_dir("case_files");
+  try {
+    igaprep::pipeline::read_case(dir);
+    ADD_FAILURE() << "a folder read as a case";
+  } catch (const igaprep::Error& e) {
+    EXPECT_NE(std::string(e.what()).find(": is a folder, not a case file"), std::string::npos) << e.what();
+  }
+  EXPECT_NE(refusal(R"({"surfaces": ["/dev/null"]})").find("/dev/null: is not a regular file"), std::string::npos)
+      << refusal(R"({"surfaces": ["/dev/null"]})");
+}
+
 TEST(Case, ValuesAreReadAndPathsResolved) {
   const Case c = parse_case(sphere2_case(R"(, "output": "out", "decomposition": {"inset": 0.4, "strategy": 1, "max_aspect": 3},
       "fit": {"elements": 4, "jacobian_target": 0}, "midsurface": {"cut": {"plane": {"point": [0, 0, 0.1],

@@ -1,4 +1,4 @@
-#include "igaprep/core/file_identity.h"
+#include "igaprep/core/input_files.h"
 
 #include <filesystem>
 #include <system_error>
@@ -6,6 +6,16 @@
 #include "igaprep/core/error.h"
 
 namespace igaprep {
+
+void require_regular_file(const std::string& path, const std::string& what) {
+  std::error_code ec;
+  const std::filesystem::file_status st = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(st))
+    throw bad_input(path + ": cannot open the " + what + " (missing or not readable)");
+  if (std::filesystem::is_directory(st)) throw bad_input(path + ": is a folder, not a " + what);
+  if (!std::filesystem::is_regular_file(st))
+    throw bad_input(path + ": is not a regular file (a FIFO, a device or a socket), not a " + what);
+}
 
 void refuse_replacing_inputs(const std::vector<std::string>& inputs, const std::vector<std::string>& outputs) {
   for (const std::string& out : outputs)

@@ -86,6 +86,16 @@ TEST(CaseCli, ModelCommandWritesExactlyTheCommittedFiles) {
 TEST(CaseCli, UnknownCommandIsAUsageError) {
   const auto r = run_cli("frobnicate");
   EXPECT_EQ(r.exit_code, 1) << r.out;
+  // Issue 21, item 14: named, with the documented prefix.
+  EXPECT_EQ(r.out.rfind("error: unknown command 'frobnicate' (commands: run, check-mesh, ", 0), 0u) << r.out;
+  for (const char* args : {"solve", "offset x.off --inward abc -o y.off", "run --no-such-flag"}) {
+    const auto u = run_cli(args);
+    EXPECT_EQ(u.exit_code, 1) << args << ": " << u.out;
+    EXPECT_EQ(u.out.rfind("error: ", 0), 0u) << args << ": " << u.out;
+  }
+  const auto help = run_cli("--help");
+  EXPECT_EQ(help.exit_code, 0) << help.out;
+  EXPECT_EQ(help.out.find("error:"), std::string::npos) << help.out;
 }
 
 }  // namespace

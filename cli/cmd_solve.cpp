@@ -24,6 +24,7 @@ struct SolveArgs {
   std::string model, output, body_force, solver = "cholesky";
   std::vector<std::string> fix, pressure, traction;
   int refine = 0, elevate = 0;
+  long long max_unknowns = iga_check::ElasticityOptions{}.max_unknowns;
 };
 
 double parse_number(const std::string& s, const std::string& what) {
@@ -91,6 +92,7 @@ int run_solve(const SolveArgs& a) {
   iga_check::ElasticityOptions options;
   options.refine = a.refine;
   options.elevate = a.elevate;
+  options.max_unknowns = a.max_unknowns;
   if (a.solver == "cholesky") options.solver = iga_check::LinearSolver::Cholesky;
   else if (a.solver == "cg") options.solver = iga_check::LinearSolver::ConjugateGradient;
   else throw bad_input("--solver must be 'cholesky' or 'cg', got '" + a.solver + "'");
@@ -128,6 +130,9 @@ void add_solve_command(CLI::App& app) {
   sub->add_option("--refine", args->refine, "Uniform h-refinement levels (each bisects every knot span)")
       ->check(CLI::Range(0, 10));
   sub->add_option("--elevate", args->elevate, "Degree elevation in every direction")->check(CLI::Range(0, 10));
+  sub->add_option("--max-unknowns", args->max_unknowns,
+                  "Refuse a refined model with more unknowns than this (estimated first; default 1000000)")
+      ->check(CLI::PositiveNumber);
   sub->add_option("--solver", args->solver, "Linear solver: cholesky (CHOLMOD when present) or cg");
   set_body(sub, [args] { return run_solve(*args); });
 }

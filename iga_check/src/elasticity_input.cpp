@@ -1,10 +1,12 @@
 #include "elasticity_input.h"
 
 #include <cmath>
+#include <sstream>
 
 #include "igaprep/core/error.h"
 #include "igaprep/iga_check/fidelity.h"
 #include "igaprep/iga_check/report.h"
+#include "igaprep/spline/knot_vector.h"
 #include "igaprep/spline/multipatch_topology.h"
 
 namespace igaprep::iga_check::detail {
@@ -70,6 +72,33 @@ void check_interfaces_conform(const spline::MultiPatch& mp) {
                     "): a solve would glue control points that do not coincide; igaprep check names every such interface");
 }
 
+// Control points along one direction after degree elevation by `elevate`
+// (each interior knot's multiplicity grows with it) and `refine` bisections
+// of every knot span. Open knot vectors (end multiplicity p + 1).
+double refined_count(const std::vector<double>& U, int p, int elevate, int refine) {
+  const double spans = static_cast<double>(spline::unique_knots(U).size()) - 1.0;
+  const double interior = static_cast<double>(U.size()) - 2.0 * (p + 1);  // summed multiplicities
+  return (p + elevate + 1) + interior + (spans - 1.0) * elevate + spans * (std::pow(2.0, refine) - 1.0);
+}
+
+// The size of the refined problem, estimated before it is made.
+void check_size(const spline::MultiPatch& mp, const ElasticityOptions& options) {
+  double unknowns = 0.0;
+  for (const spline::Patch& p : mp.patches) {
+    double n = 3.0;
+    for (int d = 0; d < 3; ++d) n *= refined_count(p.knots[d], p.degrees[d], options.elevate, options.refine);
+    unknowns += n;
+  }
+  if (unknowns > static_cast<double>(options.max_unknowns)) {
+    std::ostringstream s;
+    s << "the refined model would have about " << std::llround(unknowns) << " unknowns (" << mp.patches.size()
+      << " patches, elevate " << options.elevate << ", refine " << options.refine << "), more than the limit of "
+      << options.max_unknowns << " (ElasticityOptions::max_unknowns); refine less, or raise the limit if the machine "
+      << "has the memory";
+    throw bad_input(s.str());
+  }
+}
+
 std::vector<spline::BoundarySide> sides_with_label(const spline::MultiPatch& mp, const std::string& name,
                                                    const char* what) {
   const int label = find_label(mp, name, what);
@@ -88,6 +117,7 @@ std::vector<LameParameters> check_elasticity_input(const spline::MultiPatch& mp,
     throw bad_input("extra quadrature points must lie in 0..10");
   std::vector<LameParameters> lame = check_materials(mp);
   check_interfaces_conform(mp);
+  check_size(mp, options);
   check_conditions(mp, problem);
   check_loads_finite(problem);
   return lame;

@@ -59,6 +59,23 @@ TEST(SolveBadInput, AMirroredPatchIsRefusedNotSolved) {
   EXPECT_NEAR(left.report.strain_energy, right.report.strain_energy, 1e-10 * right.report.strain_energy);
 }
 
+// Issue 21, item 6: the size of the refined problem is estimated first; 10
+// refinements of a 16-element bar (8 * 2^30 elements) are refused at once.
+TEST(SolveBadInput, AProblemBeyondTheSizeLimitIsRefusedBeforeAnyWork) {
+  iga_check::ElasticityOptions options;
+  options.refine = 10;
+  expect_bad_input([&] { iga_check::solve_elasticity(two_box_bar(2), clamped_pulled(), options); },
+                   {"the refined model would have about ", "more than the limit of 1000000",
+                    "ElasticityOptions::max_unknowns"});
+  // The estimate counts each patch's control points: refine 1 gives 2 * 3 * 6^3.
+  options.refine = 1;
+  options.max_unknowns = 2 * 3 * 216 - 1;
+  expect_bad_input([&] { iga_check::solve_elasticity(two_box_bar(2), clamped_pulled(), options); },
+                   {"about 1296 unknowns (2 patches, elevate 0, refine 1)"});
+  options.max_unknowns = 2 * 3 * 216;
+  EXPECT_GT(iga_check::solve_elasticity(two_box_bar(2), clamped_pulled(), options).report.unknowns, 0);
+}
+
 TEST(SolveBadInput, SingularConstraintsNameTheFreeMotion) {
   MultiPatch mp = two_box_bar(2);
   ASSERT_EQ(mp.interfaces.size(), 1u);

@@ -63,6 +63,10 @@ struct ElasticityOptions {
   LinearSolver solver = LinearSolver::Cholesky;
   double cg_tolerance = 1e-8;   // relative residual for LinearSolver::ConjugateGradient
   int cg_max_iterations = 0;    // 0: 10 * unknowns
+  // Refused before any work when the refined model would have more scalar
+  // unknowns than this (estimated from the knot vectors, shared control
+  // points counted once per patch): memory grows faster than the unknowns.
+  long long max_unknowns = 1'000'000;
   ProgressCallback progress;    // elements assembled
 };
 

@@ -16,8 +16,10 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <cstdint>
+#include <cmath>
 #include <cstdio>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -25,6 +27,7 @@
 #include "cgal_surface.h"
 #include "tetgen_run.h"
 #include "igaprep/core/error.h"
+#include "igaprep/mesh/enclosed_volume.h"
 
 namespace igaprep::mesh {
 namespace {
@@ -322,11 +325,27 @@ std::vector<int> region_materials(const std::vector<SurfaceMesh>& meshes, int n,
   return material;
 }
 
+// Every tet is at most max_volume: T1's volume over it is a lower bound of
+// the count, known before TetGen allocates anything.
+void refuse_too_many_tets(const TriMesh& outer, const TetgenOptions& options) {
+  if (!(options.max_volume > 0.0)) return;
+  const double at_least = std::abs(enclosed_volume(outer)) / options.max_volume;
+  if (at_least > options.max_tets) {
+    std::ostringstream s;
+    s << "tetrahedralize: a maximum tet volume of " << options.max_volume << " makes at least " << at_least
+      << " tets (the volume " << std::abs(enclosed_volume(outer)) << " over it), more than the limit of "
+      << options.max_tets << " (max_tets); choose a larger maximum volume, or raise the limit if the machine has the "
+      << "memory (about 1 GB per 5 million tets)";
+    throw bad_input(s.str());
+  }
+}
+
 }  // namespace
 
 TetMesh tetrahedralize(const std::vector<TriMesh>& surfaces, const std::vector<TriMesh>& embedded,
                        const TetgenOptions& options) {
   if (surfaces.empty()) throw bad_input("tetrahedralize: no surfaces given");
+  refuse_too_many_tets(surfaces.front(), options);
   const SurfaceSet set = collect_surfaces(surfaces, embedded);
   TetMesh out;
   concatenate_faces(set, out);

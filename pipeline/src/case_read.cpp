@@ -237,10 +237,12 @@ mesh::TetgenOptions read_tetmesh(const json& t, const std::string& file) {
   mesh::TetgenOptions o;
   o.radius_edge_ratio = tr.number("radius_edge_ratio", o.radius_edge_ratio);
   o.max_volume = tr.number("max_volume", o.max_volume);
+  o.max_tets = tr.number("max_tets", o.max_tets);
   tr.refuse_unknown();
   if (o.radius_edge_ratio != 0.0 && !(o.radius_edge_ratio > 1.0))
     tr.fail("'tetmesh.radius_edge_ratio' must be 0 (off) or greater than 1.0 (TetGen's refinement needs > 1.0 to end)");
   if (o.max_volume < 0.0) tr.fail("'tetmesh.max_volume' must be 0 (none) or positive");
+  if (!(o.max_tets >= 1.0)) tr.fail("'tetmesh.max_tets' must be at least 1");
   return o;
 }
 

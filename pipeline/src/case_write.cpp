@@ -140,6 +140,7 @@ std::string case_json(const Case& c, const std::string& relative_to, bool all_op
   root["materials"] = materials;
   root["output"] = relative(c.output_dir, relative_to);
   root["tetmesh"] = {{"radius_edge_ratio", c.tetmesh.radius_edge_ratio}, {"max_volume", c.tetmesh.max_volume}};
+  if (all_options || c.tetmesh.max_tets != mesh::TetgenOptions{}.max_tets) root["tetmesh"]["max_tets"] = c.tetmesh.max_tets;
   if (all_options) {
     add_stage_options(c, root);
   } else {

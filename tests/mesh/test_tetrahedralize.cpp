@@ -302,6 +302,7 @@ TEST(Tetrahedralize, TheWorkerDiesWithItsParent) {
   if (runner == 0) {
     igaprep::mesh::TetgenOptions opt;
     opt.max_volume = 1e-9;  // minutes of refinement
+    opt.max_tets = 1e12;
     try {
       igaprep::mesh::tetrahedralize({igaprep::models::make_ellipsoid(1, 1, 1, 3)}, {}, opt);
     } catch (...) {
@@ -325,4 +326,22 @@ TEST(Tetrahedralize, TheWorkerDiesWithItsParent) {
   }
   EXPECT_TRUE(gone) << "TetGen worker " << workers[0] << " outlived its parent";
   if (!gone) ::kill(workers[0], SIGKILL);
+}
+
+// Issue 21, item 6: a maximum tet volume that would make more tets than the
+// limit is refused with the estimate before TetGen allocates anything.
+TEST(Tetrahedralize, TooManyTetsAreRefusedBeforeTetgenRuns) {
+  igaprep::mesh::TetgenOptions opt;
+  opt.max_volume = 1e-12;
+  try {
+    igaprep::mesh::tetrahedralize({igaprep::models::make_ellipsoid(1, 1, 1, 2)}, {}, opt);
+    ADD_FAILURE() << "no error";
+  } catch (const igaprep::Error& e) {
+    EXPECT_EQ(e.kind(), igaprep::ErrorKind::BadInput);
+    const std::string what = e.what();
+    EXPECT_NE(what.find("a maximum tet volume of 1e-12 makes at least 4."), std::string::npos) << what;
+    EXPECT_NE(what.find("more than the limit of 2e+07 (max_tets)"), std::string::npos) << what;
+  }
+  opt.max_volume = 0.01;  // about 400 tets and more: within the limit
+  EXPECT_GT(igaprep::mesh::tetrahedralize({igaprep::models::make_ellipsoid(1, 1, 1, 2)}, {}, opt).T.rows(), 400);
 }

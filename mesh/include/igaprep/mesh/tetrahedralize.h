@@ -15,6 +15,10 @@ struct TetgenOptions {
                                    // triangles never split) tets touching an input
                                    // surface may exceed it somewhat.
   bool quiet = true;               // false: copy TetGen's output to stdout
+  // Refused before TetGen runs when max_volume would make more tets than
+  // this (at least T1's volume / max_volume); TetGen takes about 1 GB per
+  // 5 million tets.
+  double max_tets = 2e7;
 };
 
 // Inputs: `surfaces` are closed, validated, nested (T1 outermost);

@@ -23,6 +23,7 @@ struct CheckArgs {
   std::string model, case_file, report_dir;
   std::vector<std::string> surfaces;
   bool allow_degenerate = false;
+  int max_degree = iga_check::CertifyOptions{}.max_degree;
 };
 
 int run_check(const CheckArgs& a, const CheckLimitFlags& limits) {
@@ -48,6 +49,7 @@ int run_check(const CheckArgs& a, const CheckLimitFlags& limits) {
     }
   }
   opt.allow_degenerate = a.allow_degenerate;
+  opt.certify.max_degree = a.max_degree;
   limits.apply(opt);
   const iga_check::CheckReport r = iga_check::build_check_report(mp, meshes, labels, opt, a.model);
   iga_check::write_report(r, a.report_dir);
@@ -73,6 +75,9 @@ void add_check_command(CLI::App& app) {
   sub->add_option("--report", args->report_dir, "Folder for report.json and report.html")->required();
   sub->add_flag("--allow-degenerate", args->allow_degenerate,
                 "Accept elements whose Jacobian vanishes only on their boundary (collapsed faces, poles)");
+  sub->add_option("--max-degree", args->max_degree,
+                  "Refuse patches of a higher degree (the certificate's cost grows as degree^3 per element; default 10)")
+      ->check(CLI::Range(1, 40));
   auto limits = add_check_limit_flags(sub);
   set_body(sub, [args, limits] { return run_check(*args, *limits); });
 }

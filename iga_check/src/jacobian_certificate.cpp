@@ -340,6 +340,13 @@ std::vector<ElementCertificate> certify_patch(const spline::Patch& p, int patch_
   const std::string name = "patch " + std::to_string(patch_index);
   for (int d = 0; d < 3; ++d)
     if (p.degrees[d] < 1) throw bad_input(name + ": degree 0 in direction " + std::to_string(d) + " has no Jacobian");
+  for (int d = 0; d < 3; ++d)
+    if (p.degrees[d] > options.max_degree)
+      throw bad_input(name + ": degree " + std::to_string(p.degrees[d]) + " in direction " + std::to_string(d) +
+                      " is above the certificate's limit of " + std::to_string(options.max_degree) +
+                      " (CertifyOptions::max_degree): det J would have " +
+                      std::to_string(static_cast<long long>(std::pow(3.0 * p.degrees[d], 3))) +
+                      " coefficients per element");
   if (p.rational() && !(p.weights.minCoeff() > 0.0)) throw bad_input(name + ": a weight is not positive");
   const spline::PatchExtraction ex = spline::bezier_extraction(p);
   std::vector<ElementCertificate> out;

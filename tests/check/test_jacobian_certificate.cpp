@@ -251,3 +251,21 @@ TEST(JacobianCertificate, AnOverflowingJacobianIsUndecidedNotDegenerate) {
       << r.verdict;
   EXPECT_NE(report_json(r).find("\"lower_bound\": null"), std::string::npos);
 }
+
+// Issue 21, item 6: a degree the certificate cannot afford is refused first.
+TEST(JacobianCertificate, ADegreeAboveTheLimitIsRefusedBeforeAnyWork) {
+  const spline::Patch p = bezier_patch(check_test::twisted, {{12, 3, 3}});
+  try {
+    certify_patch(p, 4);
+    ADD_FAILURE() << "no error";
+  } catch (const igaprep::Error& e) {
+    EXPECT_EQ(e.kind(), igaprep::ErrorKind::BadInput);
+    EXPECT_NE(std::string(e.what()).find("patch 4: degree 12 in direction 0 is above the certificate's limit of 10 "
+                                         "(CertifyOptions::max_degree): det J would have 46656 coefficients"),
+              std::string::npos)
+        << e.what();
+  }
+  CertifyOptions raised;
+  raised.max_degree = 12;
+  EXPECT_EQ(certify_patch(p, 4, raised).at(0).status, ElementStatus::Positive);
+}

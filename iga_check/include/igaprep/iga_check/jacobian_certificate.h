@@ -46,6 +46,10 @@ struct CertifyOptions {
   int max_depth = 24;           // splits along any path (about 8 per direction)
   int max_boxes = 4000;         // boxes examined per element
   double zero_tolerance = 1e-12;
+  // Degrees above this are refused before any work: det J has (3p)^3
+  // Bernstein coefficients per element (degree 30: 729,000, and up to
+  // max_boxes copies while an element is subdivided).
+  int max_degree = 10;
   ProgressCallback progress;    // patches certified (certify_model)
 };
 

@@ -77,18 +77,20 @@ void AtomicPath::commit() {
   sync_folder_of(path_);
 }
 
+void AtomicPath::write(const std::function<void(std::ostream&)>& write, bool binary) {
+  // Through the descriptor mkostemp opened, not the name.
+  const int fd = ::dup(fd_);
+  if (fd < 0) throw bad_input("cannot write '" + path_ + "': " + std::strerror(errno));
+  __gnu_cxx::stdio_filebuf<char> buffer(fd, binary ? std::ios::binary | std::ios::out : std::ios::out);
+  std::ostream out(&buffer);
+  write(out);
+  out.flush();
+  if (!out) throw bad_input("cannot write '" + path_ + "': write failed (disk full?)");
+}
+
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write, bool binary) {
   AtomicPath target(path);
-  {
-    // Through the descriptor mkostemp opened, not the name.
-    const int fd = ::dup(target.descriptor());
-    if (fd < 0) throw bad_input("cannot write '" + path + "': " + std::strerror(errno));
-    __gnu_cxx::stdio_filebuf<char> buffer(fd, binary ? std::ios::binary | std::ios::out : std::ios::out);
-    std::ostream out(&buffer);
-    write(out);
-    out.flush();
-    if (!out) throw bad_input("cannot write '" + path + "': write failed (disk full?)");
-  }
+  target.write(write, binary);
   target.commit();
 }
 

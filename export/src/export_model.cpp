@@ -1,13 +1,16 @@
 #include "igaprep/export/export_model.h"
 
 #include <algorithm>
+#include <memory>
 
+#include "igaprep/core/atomic_file.h"
 #include "igaprep/core/error.h"
 #include "igaprep/export/bext.h"
 #include "igaprep/export/gismo_xml.h"
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/export/mfem_mesh.h"
 #include "igaprep/export/vtu_bezier.h"
+#include "model_checks.h"
 
 namespace igaprep::exporter {
 
@@ -64,17 +67,25 @@ std::vector<Format> parse_formats(const std::string& list) {
 
 std::vector<std::string> export_model(const spline::MultiPatch& model, const std::string& basename,
                                       const std::vector<Format>& formats) {
-  std::vector<std::string> written;
+  detail::check_model_for_writing(model, "'" + basename + "'");
+  // Every format into its temporary file first, then all renamed into place:
+  // a format that fails leaves none of them (and the previous files) behind.
+  std::vector<std::unique_ptr<AtomicPath>> targets;
   for (Format f : formats) {
-    const std::string path = basename + format_extension(f);
+    targets.push_back(std::make_unique<AtomicPath>(basename + format_extension(f)));
+    AtomicPath& t = *targets.back();
     switch (f) {
-      case Format::Hdf5: write_hdf5_model(model, path); break;
-      case Format::Gismo: write_gismo_xml(model, path); break;
-      case Format::Mfem: write_mfem_mesh(model, path); break;
-      case Format::Vtu: write_vtu_bezier(model, path); break;
-      case Format::Bext: write_bext(model, path); break;
+      case Format::Hdf5: write_hdf5_model(model, t); break;
+      case Format::Gismo: t.write([&](std::ostream& out) { write_gismo_xml(model, out); }); break;
+      case Format::Mfem: t.write([&](std::ostream& out) { write_mfem_mesh(model, out); }); break;
+      case Format::Vtu: t.write([&](std::ostream& out) { write_vtu_bezier(model, out); }, true); break;
+      case Format::Bext: t.write([&](std::ostream& out) { write_bext(model, out); }); break;
     }
-    written.push_back(path);
+  }
+  std::vector<std::string> written;
+  for (auto& t : targets) {
+    t->commit();
+    written.push_back(t->path());
   }
   return written;
 }

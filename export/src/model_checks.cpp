@@ -9,6 +9,7 @@
 namespace igaprep::exporter::detail {
 
 void check_model_for_writing(const spline::MultiPatch& model, const std::string& what) {
+  if (model.patches.empty()) throw bad_input("cannot write " + what + ": the model has no patches");
   // Structure (knots, counts, weights, indices, sides, dirmaps): the spline
   // module's validation; the message gains the output file's name.
   try {

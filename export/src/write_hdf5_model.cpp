@@ -205,11 +205,15 @@ void write_file(const spline::MultiPatch& model, const std::string& path, const 
 }
 }  // namespace
 
-void write_hdf5_model(const spline::MultiPatch& model, const std::string& path) {
-  detail::check_model_for_writing(model, "'" + path + "'");
+void write_hdf5_model(const spline::MultiPatch& model, AtomicPath& target) {
+  detail::check_model_for_writing(model, "'" + target.path() + "'");
   detail::SilenceHdf5Errors quiet;
+  write_file(model, target.path(), target.temp_path());  // all handles closed on return
+}
+
+void write_hdf5_model(const spline::MultiPatch& model, const std::string& path) {
   AtomicPath target(path);
-  write_file(model, path, target.temp_path());  // all handles closed on return
+  write_hdf5_model(model, target);
   target.commit();
 }
 

@@ -170,7 +170,9 @@ void bind_model(py::module_& m) {
   bind_multipatch(m);
   m.def("read_model", &exporter::read_hdf5_model, py::arg("path"), py::call_guard<py::gil_scoped_release>(),
         "Reads a model (or a solve result) from an igaprep HDF5 file.");
-  m.def("write_model", &exporter::write_hdf5_model, py::arg("model"), py::arg("path"),
+  m.def("write_model",
+        static_cast<void (*)(const spline::MultiPatch&, const std::string&)>(&exporter::write_hdf5_model),
+        py::arg("model"), py::arg("path"),
         py::call_guard<py::gil_scoped_release>(), "Writes a model as an igaprep HDF5 file (atomically).");
 }
 

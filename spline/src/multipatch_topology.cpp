@@ -34,6 +34,7 @@ void check_interface(const MultiPatch& mp, const Interface& itf) {
     throw bad_input(name + ": patch index outside 0.." + std::to_string(np - 1));
   if (!itf.side_a.valid() || !itf.side_b.valid())
     throw bad_input(name + ": side outside 1..6");
+  if (itf.patch_a == itf.patch_b && itf.side_a == itf.side_b) throw bad_input(name + ": glues a side to itself");
   std::array<int, 3> sorted = itf.dirmap;
   std::sort(sorted.begin(), sorted.end());
   if (sorted != std::array<int, 3>{{0, 1, 2}}) throw bad_input(name + ": dirmap is not a permutation of 0, 1, 2");

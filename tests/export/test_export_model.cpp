@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "igaprep/core/error.h"
 #include "igaprep/export/export_model.h"
@@ -13,6 +14,19 @@
 namespace {
 using namespace igaprep::test;
 using igaprep::exporter::Format;
+
+void write_text(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+template <class F>
+void expect_bad_input_with(F f, const std::string& fragment) {
+  try {
+    f();
+    ADD_FAILURE() << "no error";
+  } catch (const igaprep::Error& e) {
+    EXPECT_EQ(e.kind(), igaprep::ErrorKind::BadInput) << e.what();
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+  }
+}
 
 TEST(ExportModel, ParsesFormatListsAndRefusesUnknownOnes) {
   EXPECT_EQ(igaprep::exporter::parse_formats("hdf5,gismo, MFEM,vtu,bext,vtu"),
@@ -39,6 +53,40 @@ TEST(ExportModel, WritesEveryFormatWithItsExtension) {
   int files = 0;
   for (const auto& e : std::filesystem::directory_iterator(dir)) (void)e, ++files;
   EXPECT_EQ(files, 5) << "no temporary files left";
+  std::filesystem::remove_all(dir);
+}
+
+// Issue 21, item 12: an export whose third format fails writes none of
+// them and leaves the previous files; a model without patches, or with an
+// interface that glues a side to itself, is refused.
+TEST(ExportModel, AFormatThatFailsLeavesNoneOfThemWritten) {
+  const std::string dir = scratch_dir("all_or_nothing");
+  igaprep::spline::MultiPatch mp = make_test_model();
+  // Patch 1's knots across its interface with patch 0 moved: every writer
+  // but MFEM's (which needs one knot vector per edge class) takes it.
+  mp.patches[1] = make_slab_patch({3, 2, 1}, {{{0, 0, 0, 0, 1.2, 2, 2, 2, 2}, {0, 0, 0, 0.6, 1, 1, 1}, {0, 0, 0.35, 1, 1}}},
+                                  [](const Eigen::Vector3d& s) { return Eigen::Vector3d(1 + s[0], s[1], s[2]); });
+  mp.patches[1].material = 0;
+  write_text(dir + "/slab.xml", "old\n");
+  EXPECT_THROW(igaprep::exporter::export_model(mp, dir + "/slab", igaprep::exporter::parse_formats("gismo,hdf5,mfem")),
+               igaprep::Error);
+  EXPECT_EQ(read_text(dir + "/slab.xml"), "old\n");
+  EXPECT_FALSE(std::filesystem::exists(dir + "/slab.h5"));
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) (void)e, ++files;
+  EXPECT_EQ(files, 1) << "temporary files left";
+
+  igaprep::spline::MultiPatch none = make_test_model();
+  none.patches.clear();
+  none.interfaces.clear();
+  none.boundaries.clear();
+  expect_bad_input_with([&] { igaprep::exporter::export_model(none, dir + "/none", {Format::Gismo}); },
+                        "the model has no patches");
+  igaprep::spline::MultiPatch self = make_test_model();
+  self.interfaces[0].patch_b = self.interfaces[0].patch_a;
+  self.interfaces[0].side_b = self.interfaces[0].side_a;
+  expect_bad_input_with([&] { igaprep::exporter::export_model(self, dir + "/self", {Format::Gismo}); },
+                        "glues a side to itself");
   std::filesystem::remove_all(dir);
 }
 

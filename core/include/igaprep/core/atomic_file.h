@@ -26,8 +26,12 @@ class AtomicPath {
   ~AtomicPath();
   AtomicPath(const AtomicPath&) = delete;
   AtomicPath& operator=(const AtomicPath&) = delete;
+  const std::string& path() const { return path_; }
   const std::string& temp_path() const { return temp_; }
   int descriptor() const { return fd_; }  // the temporary file, open for writing
+  // Calls write(stream) on the temporary file; throws bad_input when the
+  // stream fails. Several outputs can be written first and committed together.
+  void write(const std::function<void(std::ostream&)>& write, bool binary = false);
   void commit();
 
  private:

@@ -6,6 +6,7 @@
 // provenance. The same model always gives a byte-identical file.
 #include <string>
 
+#include "igaprep/core/atomic_file.h"
 #include "igaprep/spline/multipatch.h"
 
 namespace igaprep::exporter {
@@ -15,6 +16,8 @@ namespace igaprep::exporter {
 // Throws bad_input when the model is inconsistent (names the patch) or the
 // file cannot be written.
 void write_hdf5_model(const spline::MultiPatch& model, const std::string& path);
+// The same into `target`'s temporary file, left for the caller to commit.
+void write_hdf5_model(const spline::MultiPatch& model, AtomicPath& target);
 
 // Inputs: path of a file written by write_hdf5_model (or any writer following
 // the format). Output: the model. Checks the format name and version and the

@@ -4,12 +4,22 @@
 #include <cmath>
 
 #include "igaprep/core/error.h"
+#include "igaprep/core/text.h"
 #include "igaprep/spline/multipatch_topology.h"
 
 namespace igaprep::exporter::detail {
 
 void check_model_for_writing(const spline::MultiPatch& model, const std::string& what) {
   if (model.patches.empty()) throw bad_input("cannot write " + what + ": the model has no patches");
+  // Names go into XML and text formats: well-formed UTF-8 only.
+  auto check_name = [&](const std::string& name, const std::string& kind) {
+    const std::size_t at = invalid_text_at(name);
+    if (at != std::string::npos)
+      throw bad_input("cannot write " + what + ": " + kind + " is not UTF-8 text (byte " + std::to_string(at) + ")");
+  };
+  for (std::size_t i = 0; i < model.labels.size(); ++i) check_name(model.labels[i], "label " + std::to_string(i));
+  for (std::size_t i = 0; i < model.materials.size(); ++i)
+    check_name(model.materials[i].name, "material " + std::to_string(i) + "'s name");
   // Structure (knots, counts, weights, indices, sides, dirmaps): the spline
   // module's validation; the message gains the output file's name.
   try {

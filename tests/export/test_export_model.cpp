@@ -87,6 +87,18 @@ TEST(ExportModel, AFormatThatFailsLeavesNoneOfThemWritten) {
   self.interfaces[0].side_b = self.interfaces[0].side_a;
   expect_bad_input_with([&] { igaprep::exporter::export_model(self, dir + "/self", {Format::Gismo}); },
                         "glues a side to itself");
+  igaprep::spline::MultiPatch raw = make_test_model();
+  raw.labels[1] = "incl\xffusion";  // read from an HDF5 file, any bytes are possible
+  expect_bad_input_with([&] { igaprep::exporter::export_model(raw, dir + "/raw", {Format::Gismo}); },
+                        "label 1 is not UTF-8 text (byte 4)");
+  raw.labels[1] = "Einschlu\xc3\x9f \xe2\x80\x93 \xf0\x9f\x94\xa9";  // well-formed: accepted
+  EXPECT_EQ(igaprep::exporter::export_model(raw, dir + "/raw", {Format::Gismo}).size(), 1u);
+  raw.materials[0].name = "st\x01" "eel";
+  expect_bad_input_with([&] { igaprep::exporter::export_model(raw, dir + "/raw2", {Format::Gismo}); },
+                        "material 0's name is not UTF-8 text (byte 2)");
+  raw.materials[0].name = "\xc0\xaf";  // overlong '/'
+  expect_bad_input_with([&] { igaprep::exporter::export_model(raw, dir + "/raw3", {Format::Gismo}); },
+                        "material 0's name is not UTF-8 text (byte 0)");
   std::filesystem::remove_all(dir);
 }
 

@@ -72,6 +72,28 @@ void check_interfaces_conform(const spline::MultiPatch& mp) {
                     "): a solve would glue control points that do not coincide; igaprep check names every such interface");
 }
 
+// What the solve cannot integrate: a degree-0 direction (no derivative, so
+// no strain) and coordinates so large that the stiffness and the rigid-body
+// test (cubes and squares of them) overflow. Said as such rather than as the
+// singular system they would make.
+void check_geometry_usable(const spline::MultiPatch& mp) {
+  constexpr double kLargest = 1e100;
+  for (std::size_t p = 0; p < mp.patches.size(); ++p) {
+    const spline::Patch& patch = mp.patches[p];
+    for (int d = 0; d < 3; ++d)
+      if (patch.degrees[d] < 1)
+        throw bad_input("patch " + std::to_string(p) + " has degree 0 in direction " + std::to_string(d) +
+                        ": its displacement has no derivative there, so no strain; elevate its degree first");
+    const double largest = patch.control_points.cwiseAbs().maxCoeff();
+    if (!(largest <= kLargest)) {
+      std::ostringstream s;
+      s << "patch " << p << " has a control point coordinate of " << largest
+        << ": beyond 1e100 the stiffness overflows; scale the model (and its loads) first";
+      throw bad_input(s.str());
+    }
+  }
+}
+
 // Control points along one direction after degree elevation by `elevate`
 // (each interior knot's multiplicity grows with it) and `refine` bisections
 // of every knot span. Open knot vectors (end multiplicity p + 1).
@@ -116,6 +138,7 @@ std::vector<LameParameters> check_elasticity_input(const spline::MultiPatch& mp,
   if (options.extra_quadrature < 0 || options.extra_quadrature > 10)
     throw bad_input("extra quadrature points must lie in 0..10");
   std::vector<LameParameters> lame = check_materials(mp);
+  check_geometry_usable(mp);
   check_interfaces_conform(mp);
   check_size(mp, options);
   check_conditions(mp, problem);

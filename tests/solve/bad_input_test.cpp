@@ -76,6 +76,27 @@ TEST(SolveBadInput, AProblemBeyondTheSizeLimitIsRefusedBeforeAnyWork) {
   EXPECT_GT(iga_check::solve_elasticity(two_box_bar(2), clamped_pulled(), options).report.unknowns, 0);
 }
 
+// Issue 21, item 13: a degree-0 patch and coordinates near 1e200 were
+// reported as "3 rigid-body motions free"; they are named for what they are.
+TEST(SolveBadInput, DegreeZeroAndHugeCoordinatesAreNamedNotCalledSingular) {
+  MultiPatch huge = two_box_bar(2);
+  huge.patches[1].control_points(5, 1) = 1e200;
+  expect_bad_input([&] { iga_check::solve_elasticity(huge, clamped_pulled()); },
+                   {"patch 1 has a control point coordinate of 1e+200: beyond 1e100 the stiffness overflows"});
+  MultiPatch flat;
+  flat.patches = {box_patch({0, 0, 0}, {1, 1, 1}, {1, 1, 1}, {1, 1, 1})};
+  spline::Patch& p = flat.patches[0];  // degree 0 along w: one layer of control points
+  p.degrees[2] = 0;
+  p.knots[2] = {0.0, 1.0};
+  p.control_points.conservativeResize(4, 3);
+  flat.materials = {{"steel", 1000.0, 0.3}};
+  label_boundaries(flat, [](const Eigen::Vector3d&) { return std::string("all"); });
+  iga_check::ElasticityProblem fix_all;
+  fix_all.fixed = {{"all", {{true, true, true}}}};
+  expect_bad_input([&] { iga_check::solve_elasticity(flat, fix_all); },
+                   {"patch 0 has degree 0 in direction 2: its displacement has no derivative there"});
+}
+
 TEST(SolveBadInput, SingularConstraintsNameTheFreeMotion) {
   MultiPatch mp = two_box_bar(2);
   ASSERT_EQ(mp.interfaces.size(), 1u);

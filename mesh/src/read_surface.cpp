@@ -4,6 +4,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -497,6 +498,9 @@ class Reader {
       return 0;
     }
 
+    bool ascii() const { return format_ == 0; }
+    int line() const { return lex_.line(); }  // ASCII: the line of the last value
+
    private:
     const Reader& r_;
     const std::string& data_;
@@ -569,11 +573,25 @@ class Reader {
       if (is_face && iface < 0) fail("PLY face element has no vertex_indices list");
       for (long i = 0; i < e.count; ++i) {
         const std::string what = e.name + " " + std::to_string(i) + " of " + std::to_string(e.count);
+        // ASCII PLY holds one element per line: a value on another line means
+        // the header's counts do not match the body.
+        int first_line = -1;
+        auto value = [&](PlyType t) {
+          const double v = body.value(t, what);
+          if (body.ascii()) {
+            if (first_line < 0) first_line = body.line();
+            if (body.line() != first_line)
+              fail("line " + std::to_string(first_line) + ": " + what + " continues onto line " +
+                   std::to_string(body.line()) + " (one element per line): the header's element counts (" +
+                   std::to_string(e.count) + " " + e.name + ") do not match the file");
+          }
+          return v;
+        };
         double xyz[3] = {0, 0, 0};
         for (size_t k = 0; k < e.props.size(); ++k) {
           const auto& p = e.props[k];
           if (!p.is_list) {
-            const double v = body.value(p.type, what);
+            const double v = value(p.type);
             if (is_vertex) {
               if (static_cast<int>(k) == ix) xyz[0] = v;
               if (static_cast<int>(k) == iy) xyz[1] = v;
@@ -581,15 +599,20 @@ class Reader {
             }
             continue;
           }
-          const double cnt = body.value(p.count_type, what);
+          const double cnt = value(p.count_type);
           if (cnt < 0 || cnt != std::floor(cnt)) fail("bad list length in " + what);
           const bool keep = is_face && static_cast<int>(k) == iface;
           if (keep) poly.clear();
           for (long j = 0; j < static_cast<long>(cnt); ++j) {
-            const double v = body.value(p.type, what);
+            const double v = value(p.type);
             if (keep) {
-              if (v < 0 || v != std::floor(v) || v > 2147483647.0)
-                fail("face " + std::to_string(i) + " has a bad vertex index " + std::to_string(v));
+              if (v < 0 || v != std::floor(v) || v > 2147483647.0) {
+                char shown[32];
+                std::snprintf(shown, sizeof shown, "%.10g", v);
+                fail("face " + std::to_string(i) + ": its list of " + std::to_string(static_cast<long>(cnt)) +
+                     " vertex indices holds " + shown +
+                     ", which is no vertex index (a wrong list count or type in the header, or a corrupt file)");
+              }
               poly.push_back(static_cast<long>(v));
             }
           }

@@ -239,3 +239,30 @@ TEST(WriteSurface, BadTargetsThrowAndLeaveNothing) {
   EXPECT_THROW(write_surface(dir + "/no/such/folder/tetra.stl", m), igaprep::Error);
   EXPECT_FALSE(std::filesystem::exists(dir + "/no/such/folder/tetra.stl"));
 }
+
+// Issue 21, item 13: a PLY header whose counts do not match its body, and an
+// index that is no index, are said as such (they read as "a face with 0
+// vertices" and "bad vertex index -2113732608.000000").
+TEST(ReadSurfaceErrors, PlyCountsThatDoNotMatchTheBodyAreNamed) {
+  std::ifstream in(data("tetra_ascii.ply"));
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto read_error = [&](const std::string& from, const std::string& to) {
+    std::string changed = text;
+    changed.replace(changed.find(from), from.size(), to);
+    const std::string path = temp_dir() + "/changed.ply";
+    std::ofstream(path) << changed;
+    try {
+      read_surface(path);
+      ADD_FAILURE() << "read without error";
+    } catch (const igaprep::Error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string counts = read_error("element vertex 4", "element vertex 5");
+  EXPECT_NE(counts.find("continues onto line"), std::string::npos) << counts;
+  EXPECT_NE(counts.find("line 18: vertex 4 of 5 continues onto line 19 (one element per line): the header's element counts (5 vertex) do not match the file"), std::string::npos) << counts;
+  const std::string index = read_error("3 0 1 3", "3 0 -7 3");
+  EXPECT_NE(index.find("face 1: its list of 3 vertex indices holds -7, which is no vertex index"), std::string::npos)
+      << index;
+}

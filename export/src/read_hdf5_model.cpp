@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <vector>
 
@@ -59,6 +60,20 @@ class Reader {
     return d;
   }
 
+  // A dataset's declared shape is only a promise: one that holds far more
+  // values than the file has bytes (the format stores them uncompressed) is
+  // refused before anything is allocated.
+  void check_declared_size(const std::vector<hsize_t>& dims, std::size_t value_bytes, const std::string& where) const {
+    std::error_code ec;
+    const double file_bytes = static_cast<double>(std::filesystem::file_size(path_, ec));
+    double values = 1.0;
+    for (hsize_t d : dims) values *= static_cast<double>(d);
+    if (values * static_cast<double>(value_bytes) > 16.0 * file_bytes + 65536.0)
+      bad(where, "shape " + shape_text(dims) + " declares " + std::to_string(static_cast<long long>(values)) +
+                     " values, more than the file's " + std::to_string(static_cast<long long>(file_bytes)) +
+                     " bytes can hold (damaged or hostile file)");
+  }
+
   std::vector<hsize_t> shape_of(hid_t space, const std::string& where) const {
     const int rank = H5Sget_simple_extent_ndims(space);
     if (rank < 0) bad(where, "unreadable dataspace");
@@ -86,6 +101,7 @@ class Reader {
       bad(where, "type is not float64");
     H5Handle space(H5Dget_space(ds.get()));
     *dims = shape_of(space.get(), where);
+    check_declared_size(*dims, sizeof(double), where);
     hsize_t n = 1;
     for (hsize_t d : *dims) n *= d;
     std::vector<double> v(n);
@@ -105,6 +121,7 @@ class Reader {
     if (!type.valid() || H5Tget_class(type.get()) != H5T_INTEGER) bad(where, "type is not an integer (int32)");
     H5Handle space(H5Dget_space(ds.get()));
     *dims = shape_of(space.get(), where);
+    check_declared_size(*dims, sizeof(int), where);
     hsize_t n = 1;
     for (hsize_t d : *dims) n *= d;
     std::vector<long long> v(n);
@@ -122,6 +139,7 @@ class Reader {
     H5Handle space(H5Dget_space(ds.get()));
     const std::vector<hsize_t> dims = shape_of(space.get(), where);
     expect_rank(dims, 1, where, "(N,)");
+    check_declared_size(dims, 1, where);
     return read_string_values(type.get(), space.get(), dims[0], where, [&](hid_t mem, void* buf) {
       return H5Dread(ds.get(), mem, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf);
     });

@@ -57,6 +57,12 @@ def main():
             lambda f: replace(f, "interfaces", f["interfaces"][...][:, :9].copy()))
     variant(good, outdir, "weights_shape",
             lambda f: replace(f, "patches/000003/weights", f["patches/000003/weights"][...][:, :, :-1].copy()))
+    def huge_shape(f):
+        # Declared, never written: chunks are allocated only when written.
+        del f["patches/000000/control_points"]
+        f.create_dataset("patches/000000/control_points", shape=(100000, 100000, 100000, 3), dtype="f8",
+                         chunks=(1, 1, 1, 3))
+    variant(good, outdir, "huge_shape", huge_shape)
     variant(good, outdir, "decreasing_knots",
             lambda f: replace(f, "patches/000000/knots_u", f["patches/000000/knots_u"][...][::-1].copy()))
 

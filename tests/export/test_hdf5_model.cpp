@@ -183,6 +183,8 @@ TEST(Hdf5Model, DefectiveFilesAreRefusedNamingTheDataset) {
       {"interfaces_shape", {"/interfaces", "(N, 10)"}},
       {"weights_shape", {"/patches/000003/weights", "shape"}},
       {"decreasing_knots", {"/patches/000000/knots_u"}},
+      // Issue 21, item 9: refused before 2.4e16 bytes are asked for.
+      {"huge_shape", {"/patches/000000/control_points", "declares 3000000000000000 values, more than the file's"}},
   };
   int made = 0;
   for (const auto& [name, words] : cases) {
@@ -191,7 +193,7 @@ TEST(Hdf5Model, DefectiveFilesAreRefusedNamingTheDataset) {
     expect_refused(dir + "/" + name + ".h5", words);
     ++made;
   }
-  EXPECT_EQ(made, 11);
+  EXPECT_EQ(made, 12);
 
   // A truncated file, a text file and a missing file.
   const std::string bytes = read_text(good);

@@ -10,8 +10,6 @@ namespace igaprep::iga_check {
 
 namespace {
 
-std::string point(const Eigen::Vector3d& x) { return text("(%.4g %.4g %.4g)", x[0], x[1], x[2]); }
-
 std::string label_of(const std::vector<std::string>& labels, int i) {
   return i >= 0 && i < static_cast<int>(labels.size()) && !labels[i].empty() ? "'" + labels[i] + "'"
                                                                              : "surface " + std::to_string(i);
@@ -48,8 +46,8 @@ std::vector<std::string> fidelity_findings(const SurfaceFidelity& f, const mesh:
   for (std::size_t i = 0; i < regions.size() && i < kRegionsNamed; ++i) {
     const UncoveredRegion& r = regions[i];
     out.push_back(text("%s: %d input %s around %s not covered, the farthest %.3f %% of the diagonal away at %s",
-                       label.c_str(), r.vertices, r.vertices == 1 ? "vertex" : "vertices", point(r.centroid).c_str(),
-                       100.0 * r.max / diagonal, point(r.farthest).c_str()));
+                       label.c_str(), r.vertices, r.vertices == 1 ? "vertex" : "vertices", point_text(r.centroid).c_str(),
+                       100.0 * r.max / diagonal, point_text(r.farthest).c_str()));
   }
   if (regions.size() > kRegionsNamed)
     out.push_back(text("%s: %zu more uncovered regions", label.c_str(), regions.size() - kRegionsNamed));
@@ -60,7 +58,7 @@ std::vector<std::string> fidelity_findings(const SurfaceFidelity& f, const mesh:
   for (std::size_t i = 0; i < faces.size() && i < kFacesNamed; ++i)
     out.push_back(text("%s: patch %d side %d (%s) lies up to %.3f %% of the diagonal off it, at %s", label.c_str(),
                        faces[i].patch, faces[i].side.index(), faces[i].interface ? "interface" : "boundary",
-                       100.0 * faces[i].max / diagonal, point(faces[i].max_location).c_str()));
+                       100.0 * faces[i].max / diagonal, point_text(faces[i].max_location).c_str()));
   if (faces.size() > kFacesNamed)
     out.push_back(text("%s: %zu more spline faces beyond the limit", label.c_str(), faces.size() - kFacesNamed));
   return out;

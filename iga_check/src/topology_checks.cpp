@@ -153,12 +153,11 @@ TopologyReport topology_checks(const spline::MultiPatch& mp, const std::vector<m
     }
   }
   if (!surfaces.empty()) {
-    std::vector<double> enclosed;
-    for (const auto& s : surfaces) enclosed.push_back(std::abs(mesh::enclosed_volume(s)));
+    const std::vector<double> input = mesh::region_volumes(surfaces);
     for (size_t i = 0; i < surfaces.size(); ++i) {
       RegionVolume rv;
       rv.region = static_cast<int>(i);
-      rv.input_volume = enclosed[i] - (i + 1 < surfaces.size() ? enclosed[i + 1] : 0.0);
+      rv.input_volume = input[i];
       r.regions.push_back(rv);
     }
     for (int p = 0; p < np; ++p) {

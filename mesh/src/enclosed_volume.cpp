@@ -1,5 +1,7 @@
 #include "igaprep/mesh/enclosed_volume.h"
 
+#include <cmath>
+
 #include <Eigen/Geometry>
 
 namespace igaprep::mesh {
@@ -29,6 +31,15 @@ std::vector<double> enclosed_volumes(const TriMesh& mesh, const std::vector<int>
     v[static_cast<std::size_t>(face_piece[static_cast<std::size_t>(f)])] += six_volume(mesh, f, origin);
   for (double& x : v) x /= 6.0;
   return v;
+}
+
+std::vector<double> region_volumes(const std::vector<TriMesh>& nested) {
+  std::vector<double> enclosed;
+  for (const TriMesh& s : nested) enclosed.push_back(std::abs(enclosed_volume(s)));
+  std::vector<double> out;
+  for (std::size_t i = 0; i < enclosed.size(); ++i)
+    out.push_back(enclosed[i] - (i + 1 < enclosed.size() ? enclosed[i + 1] : 0.0));
+  return out;
 }
 
 }  // namespace igaprep::mesh

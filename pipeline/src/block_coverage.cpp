@@ -1,12 +1,12 @@
 #include "block_coverage.h"
 
-#include <Eigen/Geometry>
 #include <array>
 #include <cmath>
 
 #include "igaprep/core/text.h"
 #include "igaprep/iga_check/fidelity.h"
 #include "igaprep/mesh/enclosed_volume.h"
+#include "igaprep/mesh/tet_volume.h"
 #include "igaprep/param/surface_projector.h"
 #include "igaprep/spline/side.h"
 
@@ -23,13 +23,6 @@ namespace {
 constexpr double kSampleSlack = 4.0;
 constexpr int kMaxRegions = 3;  // uncovered regions named
 
-std::string point(const Eigen::Vector3d& x) { return text("(%.4g %.4g %.4g)", x[0], x[1], x[2]); }
-
-double tet_volume(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
-                  const Eigen::Vector3d& d) {
-  return (b - a).cross(c - a).dot(d - a) / 6.0;
-}
-
 // Signed volume of a block's sample grid: each cell split into the six tets
 // around its diagonal from corner (0,0,0) to (1,1,1).
 double grid_volume(const Eigen::MatrixXd& s, int m) {
@@ -41,8 +34,9 @@ double grid_volume(const Eigen::MatrixXd& s, int m) {
         const Eigen::Vector3d p0 = at(i, j, k), p7 = at(i + 1, j + 1, k + 1);
         const Eigen::Vector3d p1 = at(i + 1, j, k), p2 = at(i, j + 1, k), p4 = at(i, j, k + 1);
         const Eigen::Vector3d p3 = at(i + 1, j + 1, k), p5 = at(i + 1, j, k + 1), p6 = at(i, j + 1, k + 1);
-        v += tet_volume(p0, p1, p3, p7) + tet_volume(p0, p3, p2, p7) + tet_volume(p0, p2, p6, p7) +
-             tet_volume(p0, p6, p4, p7) + tet_volume(p0, p4, p5, p7) + tet_volume(p0, p5, p1, p7);
+        v += mesh::signed_tet_volume(p0, p1, p3, p7) + mesh::signed_tet_volume(p0, p3, p2, p7) +
+             mesh::signed_tet_volume(p0, p2, p6, p7) + mesh::signed_tet_volume(p0, p6, p4, p7) +
+             mesh::signed_tet_volume(p0, p4, p5, p7) + mesh::signed_tet_volume(p0, p5, p1, p7);
       }
   return v;
 }
@@ -87,11 +81,10 @@ void add_volume_findings(const param::VolumeParam& vp, const std::vector<mesh::T
   std::vector<double> blocks(static_cast<std::size_t>(n), 0.0);
   for (const param::SampledBlock& b : vp.blocks)
     if (b.material >= 0 && b.material < n) blocks[static_cast<std::size_t>(b.material)] += grid_volume(b.samples, m);
-  std::vector<double> enclosed;
-  for (const mesh::TriMesh& t : inputs) enclosed.push_back(std::abs(mesh::enclosed_volume(t)));
+  const std::vector<double> input = mesh::region_volumes(inputs);
   for (int k = 0; k < n; ++k) {
-    const double input = enclosed[static_cast<std::size_t>(k)] - (k + 1 < n ? enclosed[static_cast<std::size_t>(k + 1)] : 0.0);
-    const double difference = (blocks[static_cast<std::size_t>(k)] - input) / input;
+    const double difference = (blocks[static_cast<std::size_t>(k)] - input[static_cast<std::size_t>(k)]) /
+                              input[static_cast<std::size_t>(k)];
     if (std::abs(difference) > limit)
       out.push_back(text("the blocks of material %d differ from the input's volume there by %+.3f %%", k,
                          100.0 * difference));
@@ -116,8 +109,8 @@ void add_t1_findings(const param::VolumeParam& vp, const mesh::TriMesh& t1, cons
   for (std::size_t i = 0; i < regions.size() && i < kMaxRegions; ++i)
     out.push_back(text("blocks leave '%s' uncovered: %d vertices around %s, the farthest %.3f %% of the diagonal away "
                        "at %s",
-                       name.c_str(), regions[i].vertices, point(regions[i].centroid).c_str(),
-                       100.0 * regions[i].max / diagonal, point(regions[i].farthest).c_str()));
+                       name.c_str(), regions[i].vertices, point_text(regions[i].centroid).c_str(),
+                       100.0 * regions[i].max / diagonal, point_text(regions[i].farthest).c_str()));
   if (regions.size() > kMaxRegions)
     out.push_back(text("... and %zu more uncovered regions of '%s'", regions.size() - kMaxRegions, name.c_str()));
 }

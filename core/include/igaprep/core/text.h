@@ -1,5 +1,6 @@
 #pragma once
 // printf-style formatting into a string (summary lines and messages).
+#include <Eigen/Core>
 #include <cstdarg>
 #include <cstdio>
 #include <string>
@@ -18,6 +19,9 @@ __attribute__((format(printf, 1, 2))) inline std::string text(const char* format
   va_end(args);
   return out;
 }
+
+// A point for messages: "(x y z)", 4 significant digits each.
+inline std::string point_text(const Eigen::Vector3d& x) { return text("(%.4g %.4g %.4g)", x[0], x[1], x[2]); }
 
 // The first byte of `s` that is not well-formed UTF-8 text (a bad or overlong
 // sequence, a surrogate, or a control character other than tab, newline and

@@ -21,4 +21,8 @@ double enclosed_volume(const TriMesh& mesh, const Eigen::Vector3d& origin = Eige
 std::vector<double> enclosed_volumes(const TriMesh& mesh, const std::vector<int>& face_piece, int pieces,
                                      const Eigen::Vector3d& origin = Eigen::Vector3d::Zero());
 
+// Nested closed surfaces, outermost first: the volume between surface i and
+// surface i + 1 (the last: inside it), each surface counted outward.
+std::vector<double> region_volumes(const std::vector<TriMesh>& nested);
+
 }  // namespace igaprep::mesh

@@ -12,6 +12,11 @@ struct TetVolumes {
   std::vector<long> tets_per_material;
 };
 
+// Signed volume of the tet (a, b, c, d): positive when d lies on the side of
+// the triangle (a, b, c) its counter-clockwise normal points to.
+double signed_tet_volume(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                         const Eigen::Vector3d& d);
+
 // Inputs: a tet mesh with a material per tet, the number of materials.
 // Tets with a material outside [0, materials) count in the total only.
 TetVolumes tet_volumes(const TetMesh& tets, int materials);

@@ -43,11 +43,7 @@ std::shared_ptr<CheckLimitFlags> add_check_limit_flags(CLI::App* sub) {
 }
 
 void print_failed_criteria(const iga_check::CheckReport& report) {
-  for (const iga_check::Criterion& c : report.criteria) {
-    if (c.passed) continue;
-    std::printf("  %s FAILED: %s\n", c.name.c_str(), c.summary.c_str());
-    for (const std::string& f : c.findings) std::printf("    %s\n", f.c_str());
-  }
+  for (const std::string& line : iga_check::failure_lines(report)) std::printf("  %s\n", line.c_str());
 }
 
 void register_commands(CLI::App& app) {

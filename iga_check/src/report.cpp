@@ -282,17 +282,17 @@ Criterion jacobian_criterion(const CheckReport& r, std::size_t patches, bool all
   return c;
 }
 
-// One line: PASS and what was certified, or FAIL and every failed criterion.
+// One line: PASS with the certified elements, fidelity and volume, or FAIL
+// and every failed criterion.
 std::string verdict_of(const CheckReport& r) {
-  std::string v = r.passed ? "PASS: " : "FAIL: ";
-  bool first = true;
+  std::string v;
   for (const Criterion& c : r.criteria) {
-    if (r.passed ? c.name != "jacobian" && c.name != "fidelity" && c.name != "volume" : c.passed) continue;
-    if (!first) v += "; ";
-    first = false;
+    const bool shown = r.passed ? c.name == "jacobian" || c.name == "fidelity" || c.name == "volume" : !c.passed;
+    if (!shown) continue;
+    if (!v.empty()) v += "; ";
     v += r.passed && c.name == "jacobian" ? c.summary : c.name + ": " + c.summary;
   }
-  return v;
+  return (r.passed ? "PASS: " : "FAIL: ") + v;
 }
 
 }  // namespace
@@ -342,6 +342,16 @@ ElementTotals element_totals(const CheckReport& r) {
     t.undecided += p.undecided;
   }
   return t;
+}
+
+std::vector<std::string> failure_lines(const CheckReport& r) {
+  std::vector<std::string> out;
+  for (const Criterion& c : r.criteria) {
+    if (c.passed) continue;
+    out.push_back(c.name + " FAILED: " + c.summary);
+    for (const std::string& f : c.findings) out.push_back("  " + f);
+  }
+  return out;
 }
 
 std::string report_json(const CheckReport& r) {

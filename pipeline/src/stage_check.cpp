@@ -36,17 +36,6 @@ std::string headline(const iga_check::CheckReport& r, const CheckFigures& f, con
   return line;
 }
 
-// What failed and where, a line per finding.
-std::vector<std::string> failures(const iga_check::CheckReport& r) {
-  std::vector<std::string> out;
-  for (const iga_check::Criterion& c : r.criteria) {
-    if (c.passed) continue;
-    out.push_back(c.name + " FAILED: " + c.summary);
-    for (const std::string& f : c.findings) out.push_back("  " + f);
-  }
-  return out;
-}
-
 }  // namespace
 
 Check check_stage(const spline::MultiPatch& mp, const std::vector<mesh::TriMesh>& surfaces,
@@ -58,7 +47,8 @@ Check check_stage(const spline::MultiPatch& mp, const std::vector<mesh::TriMesh>
   c.report = iga_check::build_check_report(mp, surfaces, mp.labels, with_progress, "model.h5");
   c.figures = figures_of(c.report);
   c.figures.seconds = timer.seconds();
-  observer.stage_finished({"check", c.figures.seconds, headline(c.report, c.figures, mp.labels), failures(c.report)});
+  observer.stage_finished({"check", c.figures.seconds, headline(c.report, c.figures, mp.labels),
+                            iga_check::failure_lines(c.report)});
   return c;
 }
 

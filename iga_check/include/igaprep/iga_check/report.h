@@ -115,6 +115,10 @@ struct ElementTotals {
 };
 ElementTotals element_totals(const CheckReport& r);
 
+// Each failed criterion as "NAME FAILED: summary", then its findings
+// indented by two spaces: what `igaprep check` and a run print under the verdict.
+std::vector<std::string> failure_lines(const CheckReport& r);
+
 std::string report_json(const CheckReport& r);  // pretty-printed, deterministic
 std::string report_html(const CheckReport& r);
 

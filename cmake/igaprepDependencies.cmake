@@ -8,7 +8,22 @@ find_dependency(CGAL)
 find_dependency(nlohmann_json 3)
 find_dependency(OpenSSL)
 # Ceres Solver (libceres-dev): the L-BFGS of spline/'s joint Jacobian repair.
+# BLAS through libblas.so.3, which Debian's alternatives point at the best
+# BLAS installed (OpenBLAS), never ATLAS's libf77blas: linked first it took
+# CHOLMOD's dgemm_ to ATLAS's untuned build (the validation study's
+# factorization 3 times slower). FindBLAS (run by Ceres for SuiteSparse)
+# picks ATLAS by default, and Debian's Ceres names it in its link interface
+# though Ceres calls LAPACK only.
+if(NOT DEFINED BLA_VENDOR)
+  set(BLA_VENDOR Generic)
+endif()
 find_dependency(Ceres)
+if(TARGET Ceres::ceres)
+  get_target_property(_igaprep_ceres_links Ceres::ceres INTERFACE_LINK_LIBRARIES)
+  list(FILTER _igaprep_ceres_links EXCLUDE REGEX "lib(f77blas|atlas)\\.so$")
+  set_target_properties(Ceres::ceres PROPERTIES INTERFACE_LINK_LIBRARIES "${_igaprep_ceres_links}")
+  unset(_igaprep_ceres_links)
+endif()
 # FindHDF5 test-compiles a C program: a C++-only consumer needs C enabled.
 if(NOT CMAKE_C_COMPILER_LOADED)
   enable_language(C)

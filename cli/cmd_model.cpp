@@ -14,7 +14,7 @@ namespace fs = std::filesystem;
 
 void write_builtin_model(const std::string& name, const std::string& dir) {
   const models::BuiltinModel model = models::make_builtin_model(name);
-  fs::create_directories(dir);
+  create_output_folder(dir);
   pipeline::Case c;
   c.name = model.name;
   for (std::size_t i = 0; i < model.surfaces.size(); ++i) {

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "commands.h"
+#include "igaprep/core/atomic_file.h"
 #include "igaprep/mesh/tet_volume.h"
 #include "igaprep/mesh/tetrahedralize.h"
 #include "igaprep/mesh/write_vtu.h"
@@ -28,7 +29,7 @@ void add_tetmesh_command(CLI::App& app) {
       std::printf("             material %zu (%s): %ld tets, volume %.6g\n", m, c.materials[m].name.c_str(),
                   v.tets_per_material[m], v.per_material[m]);
     const std::filesystem::path dir = output->empty() ? c.output_dir : *output;
-    std::filesystem::create_directories(dir);
+    create_output_folder(dir.string());
     mesh::write_vtu((dir / "tetmesh.vtu").string(), tets);
     std::printf("             wrote %s\n", (dir / "tetmesh.vtu").c_str());
     return 0;

@@ -8,6 +8,7 @@
 
 #include "commands.h"
 #include "igaprep/core/error.h"
+#include "igaprep/pipeline/run.h"
 
 namespace {
 
@@ -35,6 +36,7 @@ int usage(const CLI::App& app, const CLI::ParseError& e) {
 
 int main(int argc, char** argv) {
   CLI::App app{"igaprep: analysis-ready trivariate spline models from nested triangle meshes"};
+  app.set_version_flag("--version", igaprep::pipeline::generator_name());
   app.require_subcommand(1);
   igaprep::cli::register_commands(app);
   if (refuse_unknown_command(app, argc, argv)) return 1;

@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "igaprep/core/atomic_file.h"
+
 namespace igaprep::cli {
 
 PrintObserver::PrintObserver(std::string dir, std::set<std::string> wanted, bool all)
@@ -39,7 +41,7 @@ void PrintObserver::stage_finished(const pipeline::StageSummary& s) {
 bool PrintObserver::wants_intermediate(const std::string& name) const { return all_ || wanted_.count(name) > 0; }
 
 void PrintObserver::intermediate(const std::string& name, const mesh::VtuMesh& mesh) {
-  std::filesystem::create_directories(dir_);
+  create_output_folder(dir_);
   const std::string path = (std::filesystem::path(dir_) / (name + ".vtu")).string();
   mesh::write_vtu(path, mesh);
   std::printf("             wrote %s\n", path.c_str());

@@ -88,6 +88,14 @@ void AtomicPath::write(const std::function<void(std::ostream&)>& write, bool bin
   if (!out) throw bad_input("cannot write '" + path_ + "': write failed (disk full?)");
 }
 
+void create_output_folder(const std::string& dir) {
+  std::error_code ec;
+  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
+    throw bad_input("output folder '" + dir + "' is an existing file, not a folder");
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw bad_input("cannot create the output folder '" + dir + "': " + ec.message());
+}
+
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write, bool binary) {
   AtomicPath target(path);
   target.write(write, binary);

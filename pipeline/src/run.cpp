@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "igaprep/core/atomic_file.h"
 #include "igaprep/core/error.h"
 #include "igaprep/core/input_files.h"
 #include "igaprep/export/export_model.h"
@@ -166,16 +167,6 @@ void refuse_replacing_case_files(const Case& c, const std::string& output_dir) {
   refuse_replacing_inputs(inputs, outputs);
 }
 
-// Before any work: an output folder that cannot be made would otherwise
-// fail only at the end, after minutes.
-void prepare_output_folder(const std::string& dir) {
-  std::error_code ec;
-  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
-    throw bad_input("output folder '" + dir + "' is an existing file, not a folder");
-  fs::create_directories(dir, ec);
-  if (ec) throw bad_input("cannot create the output folder '" + dir + "': " + ec.message());
-}
-
 }  // namespace
 
 RunResult run(const Case& c, Observer& outer, const RunOptions& o) {
@@ -183,7 +174,7 @@ RunResult run(const Case& c, Observer& outer, const RunOptions& o) {
   r.output_dir = o.output_dir.empty() ? c.output_dir : o.output_dir;
   if (o.write_outputs) {
     refuse_replacing_case_files(c, r.output_dir);
-    prepare_output_folder(r.output_dir);
+    create_output_folder(r.output_dir);  // before any work, not after minutes
   }
   std::vector<iga_check::PipelineStage> stages;
   StageRecorder observer(outer, stages);

@@ -98,6 +98,25 @@ TEST(CaseCli, UnknownCommandIsAUsageError) {
   EXPECT_EQ(help.out.find("error:"), std::string::npos) << help.out;
 }
 
+TEST(CaseCli, VersionNamesTheReleaseAndTheRevision) {
+  const auto r = run_cli("--version");
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(^igaprep [0-9]+\.[0-9]+\.[0-9]+ \(git [^)]+\)\n$)"))) << r.out;
+}
+
+// An output folder that cannot be made is bad input (exit 1), named, not an
+// internal failure: /proc takes no new folders, and a file is no folder.
+TEST(CaseCli, AnOutputFolderThatCannotBeMadeIsBadInput) {
+  const auto dir = scratch_dir("output_folder");
+  std::ofstream(dir + "/a_file") << "x";
+  for (const std::string& out : {std::string("/proc/igaprep-no-folder"), dir + "/a_file"}) {
+    const auto r = run_cli("model sphere2 -o " + out);
+    EXPECT_EQ(r.exit_code, 1) << out << ": " << r.out;
+    EXPECT_EQ(r.out.rfind("error: ", 0), 0u) << r.out;
+    EXPECT_NE(r.out.find("'" + out + "'"), std::string::npos) << r.out;
+  }
+}
+
 }  // namespace
 
 namespace {

@@ -9,6 +9,11 @@
 
 namespace igaprep {
 
+// Makes the folder an output goes into (and its parents). Throws bad_input
+// naming it when it is an existing file or cannot be made (no permission, a
+// read-only or virtual file system), before any work is spent on the output.
+void create_output_folder(const std::string& dir);
+
 // Calls write(stream) on a temporary file next to `path` and renames it into
 // place when write returns and the stream is good. On any failure the
 // temporary is removed, `path` is untouched, and an Error is thrown.

@@ -41,8 +41,11 @@ void PrintObserver::stage_finished(const pipeline::StageSummary& s) {
 bool PrintObserver::wants_intermediate(const std::string& name) const { return all_ || wanted_.count(name) > 0; }
 
 void PrintObserver::intermediate(const std::string& name, const mesh::VtuMesh& mesh) {
-  create_output_folder(dir_);
-  const std::string path = (std::filesystem::path(dir_) / (name + ".vtu")).string();
+  // Where it is now (to look at during the run): the staging folder, moved
+  // into dir_ with the outputs at the end.
+  const std::string& into = staging_.empty() ? dir_ : staging_;
+  create_output_folder(into);
+  const std::string path = (std::filesystem::path(into) / (name + ".vtu")).string();
   mesh::write_vtu(path, mesh);
   std::printf("             wrote %s\n", path.c_str());
   std::fflush(stdout);

@@ -17,10 +17,13 @@ class PrintObserver : public pipeline::Observer {
   // A bar on stderr when stderr is a terminal and IGAPREP_NO_PROGRESS is unset.
   void progress(const std::string& task, std::size_t done, std::size_t total) override;
   bool wants_intermediate(const std::string& name) const override;
+  // Written into the staging folder when there is one.
   void intermediate(const std::string& name, const mesh::VtuMesh& mesh) override;
+  void staging_folder(const std::string& folder) override { staging_ = folder; }
 
  private:
   std::string dir_;
+  std::string staging_;  // empty: write into dir_
   std::set<std::string> wanted_;
   bool all_;
   bool bar_;

@@ -44,7 +44,8 @@ int create_temporary(const std::string& path, std::string& name) {
   return fd;
 }
 
-// Makes a rename durable: the folder's entry reaches the disk.
+}  // namespace
+
 void sync_folder_of(const std::string& path) {
   std::string folder = std::filesystem::path(path).parent_path().string();
   if (folder.empty()) folder = ".";
@@ -53,8 +54,6 @@ void sync_folder_of(const std::string& path) {
   ::fsync(fd);
   ::close(fd);
 }
-
-}  // namespace
 
 AtomicPath::AtomicPath(std::string path) : path_(std::move(path)) { fd_ = create_temporary(path_, temp_); }
 

@@ -2,10 +2,11 @@
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
-#include "igaprep/core/atomic_file.h"
 #include "igaprep/core/error.h"
 #include "igaprep/core/input_files.h"
+#include "igaprep/core/output_folder.h"
 #include "igaprep/export/export_model.h"
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/pipeline/check.h"
@@ -88,16 +89,19 @@ std::string verdict_of(const iga_check::CheckReport& report, const iga_check::Pi
   return (p.passed ? "PASS: " : "FAIL: ") + verdict;
 }
 
-void write_report(RunResult& r, const RunOptions& o) {
-  if (!o.write_outputs) return;
+// The report goes in last; then the run's outputs replace the previous
+// ones at once (OutputFolder).
+void write_report_and_commit(RunResult& r, OutputFolder* folder) {
+  if (!folder) return;
   r.report.pipeline->outputs.push_back("report.json");
   r.report.pipeline->outputs.push_back("report.html");
-  iga_check::write_report(r.report, r.output_dir);
+  iga_check::write_report(r.report, folder->staging());
+  folder->commit();
 }
 
 // The load case's solve; on failure the report so far is written, then the
 // error goes on (bad input named by the case).
-void run_load_case(const Case& c, Observer& observer, const RunOptions& o, RunResult& r,
+void run_load_case(const Case& c, Observer& observer, OutputFolder* folder, RunResult& r,
                    std::vector<iga_check::PipelineStage>& stages) {
   StageTimer timer;
   iga_check::PipelineSection& p = *r.report.pipeline;
@@ -108,15 +112,15 @@ void run_load_case(const Case& c, Observer& observer, const RunOptions& o, RunRe
     p.figures.emplace_back("load_case_unknowns", static_cast<double>(rep.unknowns));
     p.figures.emplace_back("load_case_strain_energy", rep.strain_energy);
     p.figures.emplace_back("load_case_max_displacement", rep.max_displacement);
-    if (o.write_outputs) {
-      exporter::write_hdf5_model(lc.solution.model, (fs::path(r.output_dir) / "result.h5").string());
+    if (folder) {
+      exporter::write_hdf5_model(lc.solution.model, (fs::path(folder->staging()) / "result.h5").string());
       p.outputs.push_back("result.h5");
     }
   } catch (const Error& e) {
     stages.push_back({"load_case", timer.seconds()});
     p.stages = stages;
     p.verdict = std::string("ERROR: load case: ") + e.what();
-    write_report(r, o);
+    write_report_and_commit(r, folder);
     if (e.kind() == ErrorKind::BadInput) throw bad_input((c.path.empty() ? c.name : c.path) + ": " + e.what());
     throw;
   }
@@ -135,6 +139,7 @@ class StageRecorder : public Observer {
   }
   bool wants_intermediate(const std::string& name) const override { return next_.wants_intermediate(name); }
   void intermediate(const std::string& name, const mesh::VtuMesh& mesh) override { next_.intermediate(name, mesh); }
+  void staging_folder(const std::string& folder) override { next_.staging_folder(folder); }
 
  private:
   Observer& next_;
@@ -169,15 +174,14 @@ void refuse_replacing_case_files(const Case& c, const std::string& output_dir) {
 
 }  // namespace
 
-RunResult run(const Case& c, Observer& outer, const RunOptions& o) {
-  RunResult r;
-  r.output_dir = o.output_dir.empty() ? c.output_dir : o.output_dir;
-  if (o.write_outputs) {
-    refuse_replacing_case_files(c, r.output_dir);
-    create_output_folder(r.output_dir);  // before any work, not after minutes
-  }
+namespace {
+
+// The stages in order; outputs go into `folder`'s staging folder (none:
+// nothing is written).
+void run_stages(const Case& c, Observer& outer, OutputFolder* folder, RunResult& r) {
   std::vector<iga_check::PipelineStage> stages;
   StageRecorder observer(outer, stages);
+  if (folder) observer.staging_folder(folder->staging());
 
   StageTimer validate_timer;
   const Surfaces surfaces = load_surfaces(c);
@@ -196,16 +200,44 @@ RunResult run(const Case& c, Observer& outer, const RunOptions& o) {
   r.report.pipeline = pipeline_section(c, mid, fit, check.figures);
   iga_check::PipelineSection& p = *r.report.pipeline;
   r.model = std::move(fit.model);
-  if (o.write_outputs)
-    for (const auto& f : export_stage(r.model, c.export_formats, r.output_dir, observer).written)
+  if (folder)
+    for (const auto& f : export_stage(r.model, c.export_formats, folder->staging(), observer).written)
       p.outputs.push_back(fs::path(f).filename().string());
   if (c.validation.enabled) p.validation = validation_stage(r.model, r.report, c.validation, observer);
-  if (c.load_case) run_load_case(c, observer, o, r, stages);
+  if (c.load_case) run_load_case(c, observer, folder, r, stages);
   p.stages = stages;
   p.passed = r.report.passed && (!p.validation || p.validation->met);
   p.verdict = verdict_of(r.report, p);
   r.passed = p.passed;
-  write_report(r, o);
+  write_report_and_commit(r, folder);
+}
+
+}  // namespace
+
+RunResult run(const Case& c, Observer& outer, const RunOptions& o) {
+  RunResult r;
+  r.output_dir = o.output_dir.empty() ? c.output_dir : o.output_dir;
+  // Made before any work (a folder that cannot be made fails now, not after
+  // minutes). A run killed at any moment leaves the previous outputs; one
+  // that fails puts in the intermediates it made (to show where it failed)
+  // and keeps the previous model and report.
+  std::optional<OutputFolder> folder;
+  if (o.write_outputs) {
+    refuse_replacing_case_files(c, r.output_dir);
+    folder.emplace(r.output_dir);
+  }
+  try {
+    run_stages(c, outer, folder ? &*folder : nullptr, r);
+  } catch (...) {
+    if (folder && !folder->committed()) {
+      try {
+        folder->commit();
+      } catch (const Error&) {
+        // the run's own error is the one to report
+      }
+    }
+    throw;
+  }
   return r;
 }
 

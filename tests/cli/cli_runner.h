@@ -4,6 +4,9 @@
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 struct CliResult {
@@ -25,3 +28,18 @@ inline CliResult run_cli(const std::string& args) {
 }
 
 inline std::string models_dir() { return std::string(IGAPREP_SOURCE_DIR) + "/models"; }
+
+// An empty folder of the test's own below the build tree.
+inline std::string scratch_dir(const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::path(IGAPREP_BINARY_DIR) / "tests" / "cli_scratch" / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir.string();
+}
+
+inline std::string read_all(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}

@@ -15,24 +15,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string scratch_dir(const std::string& name) {
-  const fs::path dir = fs::path(IGAPREP_BINARY_DIR) / "tests" / "cli_scratch" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
-
 std::string write_case(const std::string& dir, const std::string& json) {
   const std::string path = dir + "/case.json";
   std::ofstream(path) << json;
   return path;
-}
-
-std::string read_all(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 std::string surfaces_key() { return R"("surfaces": [")" + models_dir() + R"(/sphere2/outer.off"])"; }

@@ -20,20 +20,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-std::string scratch_dir(const std::string& name) {
-  const fs::path dir = fs::path(IGAPREP_BINARY_DIR) / "tests" / "cli_scratch" / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir.string();
-}
-
-std::string read_all(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // sphere2's surfaces and materials, plus `extra` keys (a JSON fragment
 // starting with a comma, or empty).
 std::string write_case(const std::string& dir, const std::string& extra) {

@@ -9,6 +9,9 @@
 
 namespace igaprep {
 
+// Makes a rename of `path` durable: its folder's entries reach the disk.
+void sync_folder_of(const std::string& path);
+
 // Makes the folder an output goes into (and its parents). Throws bad_input
 // naming it when it is an existing file or cannot be made (no permission, a
 // read-only or virtual file system), before any work is spent on the output.

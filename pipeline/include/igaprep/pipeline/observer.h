@@ -35,6 +35,10 @@ class Observer {
     return false;
   }
   virtual void intermediate(const std::string& name, const mesh::VtuMesh& mesh) { (void)name, (void)mesh; }
+  // A run that writes its outputs stages them in `folder` and puts them in
+  // place together at its end (core/output_folder.h); an observer that
+  // writes intermediates writes them there too, under the same names.
+  virtual void staging_folder(const std::string& folder) { (void)folder; }
 };
 
 // A progress callback for the library's options that reports to the observer.

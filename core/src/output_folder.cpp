@@ -1,0 +1,157 @@
+#include "igaprep/core/output_folder.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include "igaprep/core/atomic_file.h"
+#include "igaprep/core/error.h"
+
+namespace igaprep {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* const kStagingTag = ".igaprep-";
+
+// A new folder `prefix` + "<pid>-XXXXXX" (mkdtemp: created exclusively, mode
+// 0700), or "" when the folder it goes into takes none.
+std::string make_staging(const std::string& prefix) {
+  std::string pattern = prefix + std::to_string(::getpid()) + "-XXXXXX";
+  std::vector<char> name(pattern.begin(), pattern.end());
+  name.push_back('\0');
+  return ::mkdtemp(name.data()) ? std::string(name.data()) : std::string();
+}
+
+// The pid in a staging folder's name after `prefix`, or 0.
+pid_t staging_pid(const std::string& name, const std::string& prefix) {
+  if (name.rfind(prefix, 0) != 0) return 0;
+  const std::string rest = name.substr(prefix.size());
+  const std::size_t dash = rest.find('-');
+  if (dash == 0 || dash == std::string::npos || rest.size() != dash + 7) return 0;
+  for (std::size_t i = 0; i < dash; ++i)
+    if (rest[i] < '0' || rest[i] > '9') return 0;
+  return static_cast<pid_t>(std::stol(rest.substr(0, dash)));
+}
+
+// Whether the process runs: it exists and is no zombie (a killed process
+// whose parent has not reaped it yet still answers kill(pid, 0)).
+bool process_runs(pid_t pid) {
+  if (::kill(pid, 0) != 0 && errno == ESRCH) return false;
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(stat, line)) return true;  // no /proc: trust kill()
+  const std::size_t close = line.rfind(')');  // the command name may hold spaces and parentheses
+  return close == std::string::npos || close + 2 >= line.size() || line[close + 2] != 'Z';
+}
+
+// Staging folders (names starting with `prefix`) in `folder` of processes
+// that no longer run: what a killed run left.
+void remove_stale_staging(const fs::path& folder, const std::string& prefix) {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const pid_t pid = staging_pid(entry.path().filename().string(), prefix);
+    if (pid > 0 && !process_runs(pid) && entry.is_directory(ec)) fs::remove_all(entry.path(), ec);
+  }
+}
+
+// Only files and symlinks: nothing that a swap of the folder could strand.
+bool holds_files_only(const fs::path& folder) {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const fs::file_type t = entry.symlink_status(ec).type();
+    if (t != fs::file_type::regular && t != fs::file_type::symlink) return false;
+  }
+  return !ec;
+}
+
+bool is_within(const fs::path& inner, const fs::path& outer) {
+  const std::string a = inner.string(), b = outer.string();
+  return a == b || (a.size() > b.size() && a.compare(0, b.size(), b) == 0 && a[b.size()] == '/');
+}
+
+bool same_device(const fs::path& a, const fs::path& b) {
+  struct stat sa {}, sb {};
+  return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev;
+}
+
+}  // namespace
+
+OutputFolder::OutputFolder(std::string dir) : dir_(std::move(dir)) {
+  create_output_folder(dir_);
+  std::error_code ec;
+  const fs::path real = fs::canonical(dir_, ec);
+  if (ec) throw bad_input("cannot resolve the output folder '" + dir_ + "': " + ec.message());
+  const fs::path parent = real.parent_path();
+  const std::string sibling_prefix = "." + real.filename().string() + kStagingTag;
+  remove_stale_staging(parent, sibling_prefix);
+  remove_stale_staging(real, kStagingTag);
+  const fs::path cwd = fs::current_path(ec);
+  const bool swappable = real != parent && holds_files_only(real) && !(!ec && is_within(cwd, real)) &&
+                         same_device(real, parent);
+  if (swappable) staging_ = make_staging((parent / sibling_prefix).string());
+  atomic_ = !staging_.empty();
+  if (atomic_) {
+    struct stat st {};
+    if (::stat(real.c_str(), &st) == 0) ::chmod(staging_.c_str(), st.st_mode & 07777);
+  } else {
+    staging_ = make_staging((real / kStagingTag).string());
+    if (staging_.empty())
+      throw bad_input("cannot write into the output folder '" + dir_ + "': " + std::strerror(errno));
+  }
+}
+
+OutputFolder::~OutputFolder() {
+  if (committed_) return;
+  std::error_code ec;
+  fs::remove_all(staging_, ec);
+}
+
+void OutputFolder::commit() {
+  if (committed_) throw internal_error("OutputFolder: committed twice");
+  if (atomic_ && holds_files_only(dir_)) commit_by_exchange();
+  else commit_file_by_file();
+  committed_ = true;
+}
+
+void OutputFolder::commit_by_exchange() {
+  // The folder's other files go into the new one too (hard links: the same
+  // files, nothing copied), so the swap keeps them.
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir_, ec)) {
+    const fs::path target = fs::path(staging_) / entry.path().filename();
+    if (fs::exists(fs::symlink_status(target, ec))) continue;
+    if (::linkat(AT_FDCWD, entry.path().c_str(), AT_FDCWD, target.c_str(), 0) != 0) return commit_file_by_file();
+  }
+  if (ec) return commit_file_by_file();
+  sync_folder_of((fs::path(staging_) / "x").string());
+  if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, dir_.c_str(), RENAME_EXCHANGE) != 0) {
+    if (errno == EINVAL || errno == ENOSYS || errno == ENOTSUP) return commit_file_by_file();
+    throw bad_input("cannot put the outputs into '" + dir_ + "': " + std::strerror(errno));
+  }
+  sync_folder_of(dir_);
+  fs::remove_all(staging_, ec);  // now the previous folder; a killed run's is removed by the next
+}
+
+void OutputFolder::commit_file_by_file() {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(staging_, ec)) {
+    const fs::path target = fs::path(dir_) / entry.path().filename();
+    if (std::rename(entry.path().c_str(), target.c_str()) != 0)
+      throw bad_input("cannot put '" + target.string() + "' in place: " + std::strerror(errno));
+  }
+  if (ec) throw bad_input("cannot read the staged outputs in '" + staging_ + "': " + ec.message());
+  sync_folder_of((fs::path(dir_) / "x").string());
+  fs::remove_all(staging_, ec);
+}
+
+}  // namespace igaprep

@@ -91,6 +91,7 @@ OutputFolder::OutputFolder(std::string dir) : dir_(std::move(dir)) {
   std::error_code ec;
   const fs::path real = fs::canonical(dir_, ec);
   if (ec) throw bad_input("cannot resolve the output folder '" + dir_ + "': " + ec.message());
+  real_ = real.string();
   const fs::path parent = real.parent_path();
   const std::string sibling_prefix = "." + real.filename().string() + kStagingTag;
   remove_stale_staging(parent, sibling_prefix);
@@ -118,7 +119,7 @@ OutputFolder::~OutputFolder() {
 
 void OutputFolder::commit() {
   if (committed_) throw internal_error("OutputFolder: committed twice");
-  if (atomic_ && holds_files_only(dir_)) commit_by_exchange();
+  if (atomic_ && holds_files_only(real_)) commit_by_exchange();
   else commit_file_by_file();
   committed_ = true;
 }
@@ -127,18 +128,19 @@ void OutputFolder::commit_by_exchange() {
   // The folder's other files go into the new one too (hard links: the same
   // files, nothing copied), so the swap keeps them.
   std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(dir_, ec)) {
+  for (const auto& entry : fs::directory_iterator(real_, ec)) {
     const fs::path target = fs::path(staging_) / entry.path().filename();
     if (fs::exists(fs::symlink_status(target, ec))) continue;
     if (::linkat(AT_FDCWD, entry.path().c_str(), AT_FDCWD, target.c_str(), 0) != 0) return commit_file_by_file();
   }
   if (ec) return commit_file_by_file();
   sync_folder_of((fs::path(staging_) / "x").string());
-  if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, dir_.c_str(), RENAME_EXCHANGE) != 0) {
+  // The resolved folder: a symlink named as the output folder stays a symlink.
+  if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, real_.c_str(), RENAME_EXCHANGE) != 0) {
     if (errno == EINVAL || errno == ENOSYS || errno == ENOTSUP) return commit_file_by_file();
     throw bad_input("cannot put the outputs into '" + dir_ + "': " + std::strerror(errno));
   }
-  sync_folder_of(dir_);
+  sync_folder_of(real_);
   fs::remove_all(staging_, ec);  // now the previous folder; a killed run's is removed by the next
 }
 

@@ -2,7 +2,9 @@
 // naming the key, before any work; the built-in cases; case_json.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -249,6 +251,33 @@ TEST(Case, WaypointLoopsAreReadAndWrittenBack) {
   EXPECT_NE(refusal(sphere2_case(R"(, "midsurface": {"cut": {"waypoints": [], "loops": []}})"))
                 .find("needs exactly one of 'plane', 'loops' and 'waypoints'"),
             std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+// The case fuzzer's inputs replayed (scripts/fuzz.sh): the seed corpus and
+// every input it once crashed on (fuzz/regressions/case/), each parsed or
+// refused as bad input.
+TEST(FuzzInputs, EveryCaseInputIsParsedOrRefusedAsBadInput) {
+  namespace fs = std::filesystem;
+  const fs::path fuzz = fs::path(IGAPREP_SOURCE_DIR) / "fuzz";
+  int replayed = 0;
+  for (const char* folder : {"corpus/case", "regressions/case"}) {
+    if (!fs::is_directory(fuzz / folder)) continue;
+    for (const auto& entry : fs::directory_iterator(fuzz / folder)) {
+      std::ifstream in(entry.path(), std::ios::binary);
+      const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      try {
+        parse_case(text, "/nonexistent-fuzz-folder", "fuzz.json");
+      } catch (const igaprep::Error& e) {
+        EXPECT_EQ(e.kind(), igaprep::ErrorKind::BadInput) << entry.path() << ": " << e.what();
+      }
+      ++replayed;
+    }
+  }
+  EXPECT_GE(replayed, 5);  // the committed seeds
 }
 
 }  // namespace

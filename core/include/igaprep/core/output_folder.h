@@ -40,6 +40,7 @@ class OutputFolder {
   void commit_file_by_file();
 
   std::string dir_;
+  std::string real_;  // dir_ with symlinks resolved: the folder the swap replaces
   std::string staging_;
   bool atomic_ = false;
   bool committed_ = false;

@@ -23,7 +23,7 @@ CXX=${CXX_FUZZ:-clang++}
 SAN="-fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined"
 INCLUDES=(-I core/include -I mesh/include -I param/include -I spline/include -I iga_check/include
           -I export/include -I models/include -I pipeline/include -I pipeline/src -I build/pipeline
-          -isystem /usr/include/eigen3)
+          -isystem /usr/include/eigen3 -isystem /usr/include/hdf5/serial)
 FLAGS=(-std=c++17 -O1 -g $SAN "${INCLUDES[@]}")
 CORE_SRC=(core/src/*.cpp)
 
@@ -43,6 +43,10 @@ HDF5_LIB=$(pkg-config --libs hdf5 2>/dev/null || echo "-L/usr/lib/x86_64-linux-g
   pipeline/src/json_reader.cpp "${LIBS[@]}" $HDF5_LIB -ltet -lceres -lglog -lcholmod -lgmp -lmpfr -lcrypto \
   -llapack -lblas -lpthread -o "$OUT/fuzz_case"
 
+echo "fuzz: building the HDF5 model reader"
+"$CXX" "${FLAGS[@]}" fuzz/fuzz_hdf5_model.cpp export/src/*.cpp build/spline/libigaprep_spline.a \
+  build/core/libigaprep_core.a $HDF5_LIB -lceres -lglog -llapack -lblas -lpthread -o "$OUT/fuzz_hdf5_model"
+
 [[ "$SECONDS_EACH" -gt 0 ]] || { echo "fuzz: built in $OUT"; exit 0; }
 
 run_one() {
@@ -55,4 +59,4 @@ run_one() {
 }
 export -f run_one
 export OUT SECONDS_EACH
-printf '%s\n' stl obj off ply case | xargs -P "$JOBS" -I{} bash -c 'run_one {}'
+printf '%s\n' ${TARGETS:-stl obj off ply case hdf5_model} | xargs -P "$JOBS" -I{} bash -c 'run_one {}'

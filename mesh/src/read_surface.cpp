@@ -571,6 +571,10 @@ class Reader {
       }
       if (is_vertex && (ix < 0 || iy < 0 || iz < 0)) fail("PLY vertex element has no x, y and z properties");
       if (is_face && iface < 0) fail("PLY face element has no vertex_indices list");
+      // An element without properties takes no bytes: counting through it
+      // (the header may say 10^18 of them) would only spend time (found by
+      // fuzzing).
+      if (e.props.empty()) continue;
       for (long i = 0; i < e.count; ++i) {
         const std::string what = e.name + " " + std::to_string(i) + " of " + std::to_string(e.count);
         // ASCII PLY holds one element per line: a value on another line means

@@ -8,10 +8,11 @@
 #
 #   bash scripts/fuzz.sh [SECONDS [JOBS]]
 #
-# Corpora start from fuzz/corpus/<target> (the seeds, committed) and grow in
-# build-fuzz/corpus/<target>; crash inputs are written to build-fuzz/ and
-# belong in fuzz/regressions/<target>/ once fixed (tests/fuzz_regressions
-# replays them).
+# Corpora start from fuzz/corpus/<target> (the seeds, committed) and
+# fuzz/regressions/<target> (inputs that once crashed or hung a reader) and
+# grow in build-fuzz/corpus/<target>; a finding is written to
+# build-fuzz/crash-<target>-* and belongs in fuzz/regressions/<target>/ once
+# fixed: the FuzzInputs tests (mesh and pipeline suites) replay both folders.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SECONDS_EACH=${1:-0}
@@ -51,11 +52,14 @@ echo "fuzz: building the HDF5 model reader"
 
 run_one() {
   local target=$1
-  mkdir -p "$OUT/corpus/$target"
-  "$OUT/fuzz_$target" -max_total_time="$SECONDS_EACH" -print_final_stats=1 -artifact_prefix="$OUT/crash-$target-" \
-    "$OUT/corpus/$target" "fuzz/corpus/$target" >"$OUT/fuzz_$target.log" 2>&1 || true
+  mkdir -p "$OUT/corpus/$target" "fuzz/corpus/$target"
+  local seeds=("fuzz/corpus/$target")
+  [[ -d "fuzz/regressions/$target" ]] && seeds+=("fuzz/regressions/$target")
+  # An input that takes more than 10 s is a finding too (a reader spinning).
+  "$OUT/fuzz_$target" -max_total_time="$SECONDS_EACH" -timeout=10 -print_final_stats=1 \
+    -artifact_prefix="$OUT/crash-$target-" "$OUT/corpus/$target" "${seeds[@]}" >"$OUT/fuzz_$target.log" 2>&1 || true
   echo "fuzz: $target: $(grep -E 'stat::number_of_executed_units' "$OUT/fuzz_$target.log" | awk '{print $2}') executions," \
-       "$(grep -oE 'cov: [0-9]+' "$OUT/fuzz_$target.log" | tail -1), crashes: $(ls "$OUT" | grep -c "^crash-$target-" || true)"
+       "$(grep -oE 'cov: [0-9]+' "$OUT/fuzz_$target.log" | tail -1), findings: $(ls "$OUT" | grep -c "^crash-$target-" || true)"
 }
 export -f run_one
 export OUT SECONDS_EACH

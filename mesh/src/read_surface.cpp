@@ -604,7 +604,9 @@ class Reader {
             continue;
           }
           const double cnt = value(p.count_type);
-          if (cnt < 0 || cnt != std::floor(cnt)) fail("bad list length in " + what);
+          // A count type may be float: beyond an int it is no length (and
+          // would overflow the loop's counter; found by fuzzing).
+          if (cnt < 0 || cnt != std::floor(cnt) || cnt > 2147483647.0) fail("bad list length in " + what);
           const bool keep = is_face && static_cast<int>(k) == iface;
           if (keep) poly.clear();
           for (long j = 0; j < static_cast<long>(cnt); ++j) {

@@ -637,13 +637,7 @@ class Reader {
 }  // namespace
 
 TriMesh read_surface(const std::string& path) {
-  require_regular_file(path, "surface file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw bad_input(path + ": cannot open the file (missing or not readable)");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw bad_input(path + ": read error");
-  return Reader(path, buffer.str()).read();
+  return Reader(path, read_input_file(path, "surface file")).read();
 }
 
 }  // namespace igaprep::mesh

@@ -335,12 +335,7 @@ Case parse_case(const std::string& json_text, const std::string& folder_name, co
 }
 
 Case read_case(const std::string& path) {
-  require_regular_file(path, "case file");
-  std::ifstream in(path);
-  if (!in) throw bad_input("cannot read case file '" + path + "'");
-  std::stringstream text;
-  text << in.rdbuf();
-  Case c = parse_case(text.str(), fs::absolute(fs::path(path)).parent_path().string(), path);
+  Case c = parse_case(read_input_file(path, "case file"), fs::absolute(fs::path(path)).parent_path().string(), path);
   c.path = path;
   return c;
 }

@@ -266,3 +266,17 @@ TEST(ReadSurfaceErrors, PlyCountsThatDoNotMatchTheBodyAreNamed) {
   EXPECT_NE(index.find("face 1: its list of 3 vertex indices holds -7, which is no vertex index"), std::string::npos)
       << index;
 }
+
+// A file whose read fails (here: reading /proc/self/mem at address 0 gives
+// EIO) is a read error named with the reason, not an empty file.
+TEST(ReadSurfaceErrors, AReadErrorIsNamedNotTakenForAnEmptyFile) {
+  try {
+    read_surface("/proc/self/mem");
+    ADD_FAILURE() << "read without error";
+  } catch (const igaprep::Error& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(e.kind(), igaprep::ErrorKind::BadInput);
+    EXPECT_NE(what.find("/proc/self/mem: read error after 0 bytes of the surface file: "), std::string::npos) << what;
+    EXPECT_EQ(what.find("empty"), std::string::npos) << what;
+  }
+}

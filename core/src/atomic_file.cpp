@@ -12,6 +12,7 @@
 #include <fstream>
 #include <vector>
 
+#include "ended_processes.h"
 #include "igaprep/core/error.h"
 
 namespace igaprep {
@@ -29,9 +30,13 @@ mode_t current_umask() {
 // A file beside `path` that did not exist before (mkostemp: O_CREAT|O_EXCL,
 // so never through a planted symlink) under a name no one can predict, with
 // the permissions an ordinary new file gets.
+// The name is NAME.tmp<pid>-XXXXXX: a temporary that a killed process left
+// is removed by the next write of the same output.
 int create_temporary(const std::string& path, std::string& name) {
+  const std::filesystem::path target(path);
+  detail::remove_left_by_ended_processes(target.parent_path(), target.filename().string() + ".tmp");
   std::vector<char> pattern(path.begin(), path.end());
-  for (char c : std::string(".tmpXXXXXX")) pattern.push_back(c);
+  for (char c : ".tmp" + detail::pid_tag() + "XXXXXX") pattern.push_back(c);
   pattern.push_back('\0');
   const int fd = ::mkostemp(pattern.data(), O_CLOEXEC);
   if (fd < 0) throw bad_input("cannot write '" + path + "': cannot create a file in that folder: " + std::strerror(errno));

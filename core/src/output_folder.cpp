@@ -1,7 +1,6 @@
 #include "igaprep/core/output_folder.h"
 
 #include <fcntl.h>
-#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -9,11 +8,11 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <vector>
 
 #include "igaprep/core/atomic_file.h"
 #include "igaprep/core/error.h"
+#include "ended_processes.h"
 
 namespace igaprep {
 
@@ -26,42 +25,10 @@ const char* const kStagingTag = ".igaprep-";
 // A new folder `prefix` + "<pid>-XXXXXX" (mkdtemp: created exclusively, mode
 // 0700), or "" when the folder it goes into takes none.
 std::string make_staging(const std::string& prefix) {
-  std::string pattern = prefix + std::to_string(::getpid()) + "-XXXXXX";
+  std::string pattern = prefix + detail::pid_tag() + "XXXXXX";
   std::vector<char> name(pattern.begin(), pattern.end());
   name.push_back('\0');
   return ::mkdtemp(name.data()) ? std::string(name.data()) : std::string();
-}
-
-// The pid in a staging folder's name after `prefix`, or 0.
-pid_t staging_pid(const std::string& name, const std::string& prefix) {
-  if (name.rfind(prefix, 0) != 0) return 0;
-  const std::string rest = name.substr(prefix.size());
-  const std::size_t dash = rest.find('-');
-  if (dash == 0 || dash == std::string::npos || rest.size() != dash + 7) return 0;
-  for (std::size_t i = 0; i < dash; ++i)
-    if (rest[i] < '0' || rest[i] > '9') return 0;
-  return static_cast<pid_t>(std::stol(rest.substr(0, dash)));
-}
-
-// Whether the process runs: it exists and is no zombie (a killed process
-// whose parent has not reaped it yet still answers kill(pid, 0)).
-bool process_runs(pid_t pid) {
-  if (::kill(pid, 0) != 0 && errno == ESRCH) return false;
-  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
-  std::string line;
-  if (!std::getline(stat, line)) return true;  // no /proc: trust kill()
-  const std::size_t close = line.rfind(')');  // the command name may hold spaces and parentheses
-  return close == std::string::npos || close + 2 >= line.size() || line[close + 2] != 'Z';
-}
-
-// Staging folders (names starting with `prefix`) in `folder` of processes
-// that no longer run: what a killed run left.
-void remove_stale_staging(const fs::path& folder, const std::string& prefix) {
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(folder, ec)) {
-    const pid_t pid = staging_pid(entry.path().filename().string(), prefix);
-    if (pid > 0 && !process_runs(pid) && entry.is_directory(ec)) fs::remove_all(entry.path(), ec);
-  }
 }
 
 // Only files and symlinks: nothing that a swap of the folder could strand.
@@ -94,8 +61,8 @@ OutputFolder::OutputFolder(std::string dir) : dir_(std::move(dir)) {
   real_ = real.string();
   const fs::path parent = real.parent_path();
   const std::string sibling_prefix = "." + real.filename().string() + kStagingTag;
-  remove_stale_staging(parent, sibling_prefix);
-  remove_stale_staging(real, kStagingTag);
+  detail::remove_left_by_ended_processes(parent, sibling_prefix);
+  detail::remove_left_by_ended_processes(real, kStagingTag);
   const fs::path cwd = fs::current_path(ec);
   const bool swappable = real != parent && holds_files_only(real) && !(!ec && is_within(cwd, real)) &&
                          same_device(real, parent);

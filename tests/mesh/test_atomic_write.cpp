@@ -93,3 +93,16 @@ TEST(AtomicWrite, AFailedWriteLeavesNoTemporaryAndTheOldFile) {
     EXPECT_NE(std::string(e.what()).find("cannot write '"), std::string::npos) << e.what();
   }
 }
+
+// A temporary that a killed writer left (NAME.tmp<pid>-XXXXXX) is removed by
+// the next write of the same output; one of a process that runs stays.
+TEST(AtomicWrite, ATemporaryOfAnEndedProcessIsRemovedByTheNextWrite) {
+  const fs::path dir = fresh_folder("atomic_stale");
+  const fs::path out = dir / "result.h5";
+  std::ofstream(dir / "result.h5.tmp99999999-Ab12Cd") << "left by a killed solve";  // no such pid
+  std::ofstream(dir / "result.h5.tmp1-Ab12Cd") << "a running writer's";                // pid 1 runs
+  igaprep::write_file_atomically(out.string(), [](std::ostream& o) { o << "new"; });
+  EXPECT_EQ(slurp(out), "new");
+  EXPECT_FALSE(fs::exists(dir / "result.h5.tmp99999999-Ab12Cd"));
+  EXPECT_TRUE(fs::exists(dir / "result.h5.tmp1-Ab12Cd"));
+}

@@ -101,13 +101,13 @@ void OutputFolder::commit_by_exchange() {
     if (::linkat(AT_FDCWD, entry.path().c_str(), AT_FDCWD, target.c_str(), 0) != 0) return commit_file_by_file();
   }
   if (ec) return commit_file_by_file();
-  sync_folder_of((fs::path(staging_) / "x").string());
+  sync_folder(staging_);
   // The resolved folder: a symlink named as the output folder stays a symlink.
   if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, real_.c_str(), RENAME_EXCHANGE) != 0) {
     if (errno == EINVAL || errno == ENOSYS || errno == ENOTSUP) return commit_file_by_file();
     throw bad_input("cannot put the outputs into '" + dir_ + "': " + std::strerror(errno));
   }
-  sync_folder_of(real_);
+  sync_folder_of(real_);  // the parent: both names changed there
   fs::remove_all(staging_, ec);  // now the previous folder; a killed run's is removed by the next
 }
 
@@ -119,7 +119,7 @@ void OutputFolder::commit_file_by_file() {
       throw bad_input("cannot put '" + target.string() + "' in place: " + std::strerror(errno));
   }
   if (ec) throw bad_input("cannot read the staged outputs in '" + staging_ + "': " + ec.message());
-  sync_folder_of((fs::path(dir_) / "x").string());
+  sync_folder(dir_);
   fs::remove_all(staging_, ec);
 }
 

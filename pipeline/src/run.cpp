@@ -172,10 +172,6 @@ void refuse_replacing_case_files(const Case& c, const std::string& output_dir) {
   refuse_replacing_inputs(inputs, outputs);
 }
 
-}  // namespace
-
-namespace {
-
 // The stages in order; outputs go into `folder`'s staging folder (none:
 // nothing is written).
 void run_stages(const Case& c, Observer& outer, OutputFolder* folder, RunResult& r) {

@@ -9,7 +9,9 @@
 
 namespace igaprep {
 
-// Makes a rename of `path` durable: its folder's entries reach the disk.
+// Makes renames in `folder` durable: its entries reach the disk.
+void sync_folder(const std::string& folder);
+// The same for the folder that holds `path`.
 void sync_folder_of(const std::string& path);
 
 // Makes the folder an output goes into (and its parents). Throws bad_input

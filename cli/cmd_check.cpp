@@ -12,8 +12,6 @@
 #include "igaprep/core/error.h"
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/iga_check/report.h"
-#include "igaprep/mesh/read_surface.h"
-#include "igaprep/pipeline/surfaces.h"
 
 namespace igaprep::cli {
 
@@ -33,25 +31,11 @@ int run_check(const CheckArgs& a, const CheckLimitFlags& limits) {
   refuse_replacing_inputs(inputs, {(std::filesystem::path(a.report_dir) / "report.json").string(),
                                    (std::filesystem::path(a.report_dir) / "report.html").string()});
   const spline::MultiPatch mp = exporter::read_hdf5_model(a.model);
-  std::vector<mesh::TriMesh> meshes;
-  std::vector<std::string> labels;
-  iga_check::CheckOptions opt;
-  if (!a.case_file.empty()) {
-    const pipeline::Case c = pipeline::read_case(a.case_file);
-    opt = c.check;
-    pipeline::Surfaces s = pipeline::load_surfaces(c);
-    meshes = std::move(s.inputs);
-    for (const auto& cs : c.surfaces) labels.push_back(cs.label);
-  } else {
-    for (const std::string& f : a.surfaces) {
-      meshes.push_back(mesh::read_surface(f));
-      labels.push_back(std::filesystem::path(f).stem().string());
-    }
-  }
-  opt.allow_degenerate = a.allow_degenerate;
-  opt.certify.max_degree = a.max_degree;
-  limits.apply(opt);
-  const iga_check::CheckReport r = iga_check::build_check_report(mp, meshes, labels, opt, a.model);
+  CheckInputs in = read_check_inputs(a.case_file, a.surfaces);
+  in.options.allow_degenerate = a.allow_degenerate;
+  in.options.certify.max_degree = a.max_degree;
+  limits.apply(in.options);
+  const iga_check::CheckReport r = iga_check::build_check_report(mp, in.meshes, in.labels, in.options, a.model);
   iga_check::write_report(r, a.report_dir);
   for (const auto& w : r.warnings) std::cerr << "warning: " << w << "\n";
   std::cout << r.verdict << "\n" << std::flush;

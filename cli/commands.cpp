@@ -1,7 +1,12 @@
 #include "commands.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <map>
+
+#include "igaprep/mesh/read_surface.h"
+#include "igaprep/pipeline/case.h"
+#include "igaprep/pipeline/surfaces.h"
 
 namespace igaprep::cli {
 
@@ -14,6 +19,7 @@ void add_export_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_solve_command(CLI::App& app);
 void add_midsurface_command(CLI::App& app);
+void add_reduce_command(CLI::App& app);
 
 namespace {
 std::map<CLI::App*, CommandBody>& bodies() {
@@ -42,6 +48,22 @@ std::shared_ptr<CheckLimitFlags> add_check_limit_flags(CLI::App* sub) {
   return flags;
 }
 
+CheckInputs read_check_inputs(const std::string& case_file, const std::vector<std::string>& surface_files) {
+  CheckInputs in;
+  if (!case_file.empty()) {
+    const pipeline::Case c = pipeline::read_case(case_file);
+    in.options = c.check;
+    in.meshes = pipeline::load_surfaces(c).inputs;
+    for (const auto& cs : c.surfaces) in.labels.push_back(cs.label);
+    return in;
+  }
+  for (const std::string& f : surface_files) {
+    in.meshes.push_back(mesh::read_surface(f));
+    in.labels.push_back(std::filesystem::path(f).stem().string());
+  }
+  return in;
+}
+
 void print_failed_criteria(const iga_check::CheckReport& report) {
   for (const std::string& line : iga_check::failure_lines(report)) std::printf("  %s\n", line.c_str());
 }
@@ -55,6 +77,7 @@ void register_commands(CLI::App& app) {
   add_model_command(app);
   add_export_command(app);
   add_check_command(app);
+  add_reduce_command(app);
   add_solve_command(app);
 }
 

@@ -6,7 +6,11 @@
 #include <memory>
 #include <optional>
 
+#include <string>
+#include <vector>
+
 #include "igaprep/iga_check/report.h"
+#include "igaprep/mesh/tri_mesh.h"
 
 namespace igaprep::cli {
 
@@ -26,6 +30,15 @@ struct CheckLimitFlags {
   void apply(iga_check::CheckOptions& options) const;
 };
 std::shared_ptr<CheckLimitFlags> add_check_limit_flags(CLI::App* sub);
+
+// The input surfaces of `check` and `reduce`: a case's, with its check
+// options, or surface files outermost first (labels: the files' stems).
+struct CheckInputs {
+  std::vector<mesh::TriMesh> meshes;
+  std::vector<std::string> labels;
+  iga_check::CheckOptions options;
+};
+CheckInputs read_check_inputs(const std::string& case_file, const std::vector<std::string>& surface_files);
 
 // Prints the failed criteria of a check and where they fail, one line each.
 void print_failed_criteria(const iga_check::CheckReport& report);

@@ -17,10 +17,6 @@ using nlohmann::ordered_json;
 
 namespace {
 
-bool element_passes(const ElementCertificate& c, bool allow_degenerate) {
-  return c.status == ElementStatus::Positive || (allow_degenerate && c.status == ElementStatus::Degenerate);
-}
-
 // JSON numbers must be finite: non-finite values (never expected) become null.
 ordered_json num(double x) { return std::isfinite(x) ? ordered_json(x) : ordered_json(nullptr); }
 
@@ -241,7 +237,7 @@ void summarize_patches(CheckReport& r, const spline::MultiPatch& mp, bool allow_
       case ElementStatus::Undecided: ++s.undecided; break;
     }
     s.det_j_lower_bound = std::min(s.det_j_lower_bound, c.lower_bound);
-    if (!element_passes(c, allow_degenerate)) s.passed = false;
+    if (!element_certified(c, allow_degenerate)) s.passed = false;
   }
   for (const auto& s : r.patches)
     if (!s.passed) r.failed_patches.push_back(s.patch);
@@ -251,7 +247,7 @@ void summarize_patches(CheckReport& r, const spline::MultiPatch& mp, bool allow_
 std::vector<ElementCertificate> worst_elements_of(const CheckReport& r, const CheckOptions& options) {
   std::vector<ElementCertificate> sorted = r.certificates;
   std::stable_sort(sorted.begin(), sorted.end(), [&](const ElementCertificate& a, const ElementCertificate& b) {
-    const bool pa = element_passes(a, options.allow_degenerate), pb = element_passes(b, options.allow_degenerate);
+    const bool pa = element_certified(a, options.allow_degenerate), pb = element_certified(b, options.allow_degenerate);
     if (pa != pb) return !pa;
     return a.lower_bound < b.lower_bound;
   });

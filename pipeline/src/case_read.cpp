@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <limits>
 #include <set>
 
 #include "case_sections.h"
@@ -194,6 +195,20 @@ CaseValidation read_validation(const json& v, const std::string& file) {
   return c;
 }
 
+// Exactly one of the two tolerances, positive.
+ReduceSettings read_reduce(const json& v, const std::string& file) {
+  ObjectReader r(v, "reduce", file);
+  ReduceSettings s;
+  const double huge = std::numeric_limits<double>::max();
+  s.tolerance = r.number_in("tolerance", 0.0, 0.0, huge);
+  s.relative_tolerance = r.number_in("relative_tolerance", 0.0, 0.0, 1.0);
+  r.refuse_unknown();
+  if ((s.tolerance > 0.0) == (s.relative_tolerance > 0.0))
+    r.fail("'reduce' needs exactly one of 'tolerance' (> 0, model units) and 'relative_tolerance' (> 0, a fraction "
+           "of the model's diagonal)");
+  return s;
+}
+
 // Limits in percent in the file, fractions in CheckOptions.
 iga_check::CheckOptions read_check(const json& v, const std::string& file) {
   ObjectReader r(v, "check", file);
@@ -302,6 +317,7 @@ void read_sections(ObjectReader& r, const std::string& file, Case& c) {
   if (const json* e = r.find("export")) c.export_formats = read_export(*e, file);
   if (const json* k = r.find("check")) c.check = read_check(*k, file);
   if (const json* v = r.find("validation")) c.validation = read_validation(*v, file);
+  if (const json* d = r.find("reduce")) c.reduce = read_reduce(*d, file);
   if (const json* l = r.find("load_case")) {
     c.load_case = read_load_case(*l, file);
     check_load_case_labels(c, r);

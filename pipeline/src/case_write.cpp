@@ -46,6 +46,10 @@ json check_json(const iga_check::CheckOptions& o) {
   return {{"fidelity_limit", 100.0 * o.fidelity_limit}, {"volume_limit", 100.0 * o.volume_limit}};
 }
 
+json reduce_json(const ReduceSettings& s) {
+  return s.tolerance > 0.0 ? json{{"tolerance", s.tolerance}} : json{{"relative_tolerance", s.relative_tolerance}};
+}
+
 bool check_is_default(const iga_check::CheckOptions& o) {
   const iga_check::CheckOptions d;
   return o.fidelity_limit == d.fidelity_limit && o.volume_limit == d.volume_limit;
@@ -119,6 +123,7 @@ void add_stage_options(const Case& c, json& root) {
   root["export"] = c.export_formats;
   root["check"] = check_json(c.check);
   root["validation"] = validation_json(c.validation);
+  if (c.reduce) root["reduce"] = reduce_json(*c.reduce);
   if (c.load_case) root["load_case"] = load_case_json(*c.load_case);
 }
 
@@ -147,6 +152,7 @@ std::string case_json(const Case& c, const std::string& relative_to, bool all_op
     if (!c.export_formats.empty()) root["export"] = c.export_formats;
     if (!check_is_default(c.check)) root["check"] = check_json(c.check);
     if (!validation_is_default(c.validation)) root["validation"] = validation_json(c.validation);
+    if (c.reduce) root["reduce"] = reduce_json(*c.reduce);
   }
   return root.dump(2) + "\n";
 }

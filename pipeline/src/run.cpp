@@ -13,6 +13,7 @@
 #include "igaprep/pipeline/export.h"
 #include "igaprep/pipeline/midsurface.h"
 #include "igaprep/pipeline/provenance.h"
+#include "igaprep/pipeline/reduce.h"
 #include "igaprep/pipeline/surfaces.h"
 #include "igaprep/pipeline/validation.h"
 #include "igaprep/pipeline/volume.h"
@@ -30,9 +31,22 @@ long count_control_points(const spline::MultiPatch& mp) {
   return n;
 }
 
+// The reduction's figures (docs/check-report.md); the model's counts above are the reduced model's.
+void add_reduce_figures(const ReduceFigures& r, iga_check::PipelineSection& p) {
+  auto add = [&](const std::string& name, double value) { p.figures.emplace_back(name, value); };
+  add("reduce_tolerance_asked", r.tolerance_asked);
+  add("reduce_tolerance", r.tolerance);
+  add("reduce_bound", r.bound);
+  add("reduce_measured_deviation", r.measured);
+  add("reduce_control_points_before", static_cast<double>(r.control_points_before));
+  add("reduce_elements_before", static_cast<double>(r.elements_before));
+  add("reduce_knots_removed", r.knots_removed);
+  add("reduce_removals_undone", r.removals_undone);
+}
+
 // The run's section of the report: figures in a fixed order (docs/check-report.md).
 iga_check::PipelineSection pipeline_section(const Case& c, const param::MidsurfaceResult& mid, const Fit& fit,
-                                            const CheckFigures& check) {
+                                            const CheckFigures& check, const std::optional<ReduceFigures>& reduce) {
   const spline::MultiPatch& mp = fit.model;
   iga_check::PipelineSection p;
   p.case_name = c.name;
@@ -61,6 +75,7 @@ iga_check::PipelineSection pipeline_section(const Case& c, const param::Midsurfa
     add("optimized_min_scaled_jacobian", fit.jacobians.min_after);
     add("optimized_control_points", fit.jacobians.moved_points);
   }
+  if (reduce) add_reduce_figures(*reduce, p);
   add("positive_elements", static_cast<double>(check.positive));
   add("negative_elements", static_cast<double>(check.negative));
   add("degenerate_elements", static_cast<double>(check.degenerate));
@@ -190,10 +205,19 @@ void run_stages(const Case& c, Observer& outer, OutputFolder* folder, RunResult&
   Fit fit = fit_stage(c, d, param_stage(c, surfaces, d, observer), observer);
   fill_provenance(c, fit.model);
 
-  Check check = check_stage(fit.model, surfaces.inputs, c.check, observer);
+  std::optional<ReduceFigures> reduced;
+  Check check;
+  if (c.reduce) {
+    CheckedReduction cr = reduce_checked(fit.model, *c.reduce, surfaces.inputs, c.check, observer);
+    fit.model = std::move(cr.reduction.model);
+    reduced = cr.reduction.figures;
+    check = std::move(cr.reduced);
+  } else {
+    check = check_stage(fit.model, surfaces.inputs, c.check, observer);
+  }
   r.report = std::move(check.report);
   r.report.model = "model.h5";
-  r.report.pipeline = pipeline_section(c, mid, fit, check.figures);
+  r.report.pipeline = pipeline_section(c, mid, fit, check.figures, reduced);
   iga_check::PipelineSection& p = *r.report.pipeline;
   r.model = std::move(fit.model);
   if (folder)

@@ -39,7 +39,7 @@ std::string headline(const iga_check::CheckReport& r, const CheckFigures& f, con
 }  // namespace
 
 Check check_stage(const spline::MultiPatch& mp, const std::vector<mesh::TriMesh>& surfaces,
-                  const iga_check::CheckOptions& options, Observer& observer) {
+                  const iga_check::CheckOptions& options, Observer& observer, const std::string& stage) {
   StageTimer timer;
   Check c;
   iga_check::CheckOptions with_progress = options;
@@ -47,7 +47,7 @@ Check check_stage(const spline::MultiPatch& mp, const std::vector<mesh::TriMesh>
   c.report = iga_check::build_check_report(mp, surfaces, mp.labels, with_progress, "model.h5");
   c.figures = figures_of(c.report);
   c.figures.seconds = timer.seconds();
-  observer.stage_finished({"check", c.figures.seconds, headline(c.report, c.figures, mp.labels),
+  observer.stage_finished({stage, c.figures.seconds, headline(c.report, c.figures, mp.labels),
                             iga_check::failure_lines(c.report)});
   return c;
 }

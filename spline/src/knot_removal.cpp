@@ -11,8 +11,8 @@
 // old basis, so |x - x'| <= max_i |Q_i - Q'_i| (partition of unity,
 // non-negativity). NURBS, with homogeneous A = w (x - c) about a centre c:
 // x - x' = (dA + (x' - c) dW) / W, so |x - x'| <= (max|dA_i| + R max|dW_i|) / w_min
-// with R = max_i |P'_i - c| over the new control points and w_min the
-// smallest old weight.
+// with R = max_i |P'_i - c| over the new volume's control points in the old
+// basis (x' lies in their convex hull) and w_min the smallest old weight.
 #include "igaprep/spline/knot_removal.h"
 
 #include <algorithm>
@@ -73,6 +73,27 @@ double remove_knot_once_1d(const std::vector<double>& U, int p, const Eigen::Mat
   return err;
 }
 
+double change_bound(const Patch& before, const Patch& after) {
+  if (before.control_points.rows() != after.control_points.rows() || before.rational() != after.rational())
+    throw internal_error("change_bound: the patches are not in one basis");
+  const Eigen::MatrixXd d = before.control_points - after.control_points;
+  double bound = 0;
+  if (!before.rational()) {
+    bound = d.rows() ? d.rowwise().norm().maxCoeff() : 0.0;
+  } else if (after.weights.minCoeff() <= 0) {
+    bound = std::numeric_limits<double>::infinity();
+  } else {
+    const Eigen::RowVector3d centre =
+        0.5 * (before.control_points.colwise().minCoeff() + before.control_points.colwise().maxCoeff());
+    const Eigen::MatrixXd x0 = before.control_points.rowwise() - centre;
+    const Eigen::MatrixXd x1 = after.control_points.rowwise() - centre;
+    const Eigen::MatrixXd dA = x0.array().colwise() * before.weights.array() - x1.array().colwise() * after.weights.array();
+    const double dW = (before.weights - after.weights).cwiseAbs().maxCoeff();
+    bound = (dA.rowwise().norm().maxCoeff() + x1.rowwise().norm().maxCoeff() * dW) / before.weights.minCoeff();
+  }
+  return std::isfinite(bound) && after.control_points.allFinite() ? bound : std::numeric_limits<double>::infinity();
+}
+
 namespace {
 
 // One removal of u from direction dir of a patch; returns the bound, fills *out.
@@ -83,41 +104,16 @@ double try_remove(const Patch& patch, int dir, double u, Patch* out) {
   if (r < 0 || U[r] != u || r <= p || r >= basis_count(U, p))
     throw bad_input("remove_knot: " + std::to_string(u) + " is not an interior knot of direction " +
                     std::to_string(dir));
-  Patch work = patch;
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  if (patch.rational()) {
-    centre = 0.5 * (patch.control_points.colwise().minCoeff() + patch.control_points.colwise().maxCoeff()).transpose();
-    work.control_points.rowwise() -= centre.transpose();
-  }
-  const Eigen::MatrixXd Q = patch_rows(work, dir);
   std::vector<double> Un;
   Eigen::MatrixXd P, Qa;
-  remove_once(U, p, Q, r, &Un, &P, &Qa);
-  *out = work;
+  remove_once(U, p, patch_rows(patch, dir), r, &Un, &P, &Qa);
+  *out = patch;
   out->knots[dir] = Un;
   set_patch_rows(out, dir, P, static_cast<int>(P.rows()));
-  const Eigen::MatrixXd dQ = Qa - Q;
-  double bound = 0;
-  if (!patch.rational()) {
-    for (long i = 0; i < dQ.rows(); ++i)
-      for (long c = 0; c < dQ.cols(); c += 3) bound = std::max(bound, dQ.row(i).segment<3>(c).norm());
-  } else {
-    double dA = 0, dW = 0;
-    for (long i = 0; i < dQ.rows(); ++i)
-      for (long c = 0; c < dQ.cols(); c += 4) {
-        dA = std::max(dA, dQ.row(i).segment<3>(c).norm());
-        dW = std::max(dW, std::abs(dQ(i, c + 3)));
-      }
-    const double R = out->control_points.rowwise().norm().maxCoeff();
-    const double wmin = patch.weights.minCoeff();
-    if (out->weights.minCoeff() <= 0) bound = std::numeric_limits<double>::infinity();
-    else bound = (dA + R * dW) / wmin;
-    out->control_points.rowwise() += centre.transpose();
-  }
-  if (!std::isfinite(bound) || !out->control_points.allFinite())
-    bound = std::numeric_limits<double>::infinity();
   out->displacement.resize(0, 0);
-  return bound;
+  Patch again = patch;
+  set_patch_rows(&again, dir, Qa, static_cast<int>(Qa.rows()));
+  return change_bound(patch, again);
 }
 
 }  // namespace

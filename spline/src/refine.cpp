@@ -5,6 +5,7 @@
 #include "igaprep/spline/refine.h"
 
 #include <algorithm>
+#include <iterator>
 #include <cmath>
 #include <sstream>
 
@@ -212,6 +213,24 @@ Patch elevate_degree(const Patch& patch, int dir, int t) {
   out.degrees[dir] = patch.degrees[dir] + t;
   set_patch_rows(&out, dir, R, static_cast<int>(R.rows()));
   if (out.displacement.size() > 0) out.displacement.resize(0, 0);
+  return out;
+}
+
+std::vector<double> missing_knots(const std::vector<double>& fine, const std::vector<double>& coarse) {
+  std::vector<double> missing, extra;
+  std::set_difference(fine.begin(), fine.end(), coarse.begin(), coarse.end(), std::back_inserter(missing));
+  std::set_difference(coarse.begin(), coarse.end(), fine.begin(), fine.end(), std::back_inserter(extra));
+  if (!extra.empty() || coarse.empty() || fine.empty() || coarse.front() != fine.front() || coarse.back() != fine.back())
+    throw bad_input("refinement: a knot vector is not nested in the finer one");
+  return missing;
+}
+
+Patch refine_to_knots(const Patch& patch, const std::array<std::vector<double>, 3>& knots) {
+  Patch out = patch;
+  for (int d = 0; d < 3; ++d) {
+    const std::vector<double> X = missing_knots(knots[d], out.knots[d]);
+    if (!X.empty()) out = insert_knots(out, d, X);
+  }
   return out;
 }
 

@@ -68,6 +68,11 @@ struct ElementCertificate {
   int max_depth = 0;  // deepest split reached
 };
 
+// Whether an element passes the check: certified positive, or degenerate
+// where that is allowed.
+inline bool element_certified(const ElementCertificate& c, bool allow_degenerate) {
+  return c.status == ElementStatus::Positive || (allow_degenerate && c.status == ElementStatus::Degenerate);
+}
 // The sign-carrying numerator N in local coordinates t in [0,1]^3 of the
 // element (det J with respect to t; divide by the element's parameter lengths
 // for det J with respect to patch parameters). `magnitude` (optional)

@@ -13,6 +13,7 @@
 #include "igaprep/param/base_surface.h"
 #include "igaprep/param/midsurface_pipeline.h"
 #include "igaprep/param/volume_param.h"
+#include "igaprep/pipeline/reduce.h"
 #include "igaprep/spline/block_fit.h"
 #include "igaprep/spline/optimize_jacobian.h"
 
@@ -98,6 +99,7 @@ struct Case {
   std::vector<std::string> export_formats;  // section "export": besides model.h5, in order
   iga_check::CheckOptions check;            // section "check": fidelity_limit, volume_limit (percent in the file)
   CaseValidation validation;                // section "validation"
+  std::optional<ReduceSettings> reduce;     // section "reduce": data reduction after the fit
   std::optional<CaseLoadCase> load_case;    // section "load_case"
 };
 

@@ -30,8 +30,10 @@ struct Check {
   CheckFigures figures;
 };
 
-// Inputs: model, surfaces (outermost first; labels = the model's), options.
+// Inputs: model, surfaces (outermost first; labels = the model's), options;
+// the stage's name in its summary ("check", or "check_fitted" for the check
+// of a model before its reduction).
 Check check_stage(const spline::MultiPatch& mp, const std::vector<mesh::TriMesh>& surfaces,
-                  const iga_check::CheckOptions& options, Observer& observer);
+                  const iga_check::CheckOptions& options, Observer& observer, const std::string& stage = "check");
 
 }  // namespace igaprep::pipeline

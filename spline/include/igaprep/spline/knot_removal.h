@@ -14,6 +14,12 @@
 
 namespace igaprep::spline {
 
+// Bound of |x(u) - x'(u)| over the whole domain for two patches in one basis
+// (the same degrees and knots): the largest control-point distance for
+// B-splines, a bound through the weights for NURBS (knot_removal.cpp);
+// infinite when `after` has a weight <= 0 or a non-finite point.
+double change_bound(const Patch& before, const Patch& after);
+
 // 1-D core: removes the knot U[r] once from rows P (n x m, homogeneous when
 // rational). Returns the max row distance (Euclidean over each row's
 // `block`-wide groups of columns; block = m means whole row) between P and the

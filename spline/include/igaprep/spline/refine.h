@@ -3,6 +3,7 @@
 // (Boehm / Oslo, Piegl & Tiller A5.4) and degree elevation. Volumes are
 // refined direction by direction; rational patches in homogeneous coordinates.
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 #include "igaprep/spline/curve_surface.h"
@@ -28,6 +29,13 @@ void elevate_degree_1d(const std::vector<double>& U, int p, const Eigen::MatrixX
 Patch insert_knots(const Patch& patch, int dir, const std::vector<double>& X);
 Patch insert_knot(const Patch& patch, int dir, double u, int times = 1);
 Patch elevate_degree(const Patch& patch, int dir, int t = 1);
+// The patch on finer knot vectors: each of `knots` must hold the patch's
+// knots (as a multiset, same ends); the missing ones are inserted. bad_input
+// when a knot vector is not nested.
+Patch refine_to_knots(const Patch& patch, const std::array<std::vector<double>, 3>& knots);
+// The knots of `fine` that `coarse` lacks (multisets); bad_input unless
+// coarse is nested in fine with the same ends.
+std::vector<double> missing_knots(const std::vector<double>& fine, const std::vector<double>& coarse);
 // h-refinement: `k` new knots evenly inside every element, each direction.
 Patch refine_uniformly(const Patch& patch, int k = 1);
 

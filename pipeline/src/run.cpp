@@ -40,6 +40,7 @@ void add_reduce_figures(const ReduceFigures& r, iga_check::PipelineSection& p) {
   add("reduce_measured_deviation", r.measured);
   add("reduce_control_points_before", static_cast<double>(r.control_points_before));
   add("reduce_elements_before", static_cast<double>(r.elements_before));
+  add("reduce_uncertified_elements_before", static_cast<double>(r.uncertified_before));
   add("reduce_knots_removed", r.knots_removed);
   add("reduce_removals_undone", r.removals_undone);
 }

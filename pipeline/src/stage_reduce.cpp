@@ -119,6 +119,8 @@ Reduction reduce_stage(const spline::MultiPatch& mp, const ReduceSettings& setti
   f.control_points_after = m.control_points_after;
   f.elements_before = m.elements_before;
   f.elements_after = m.elements_after;
+  for (const iga_check::ElementCertificate& c : before.certificates)
+    f.uncertified_before += iga_check::element_certified(c, options.allow_degenerate) ? 0 : 1;
   f.knots_removed = m.knots_removed;
   f.removals_undone = m.removals_undone;
   f.inconsistent_families = m.inconsistent_families;

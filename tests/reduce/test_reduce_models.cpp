@@ -8,6 +8,8 @@
 #include <cstdlib>
 #include <fstream>
 
+#include <sys/wait.h>
+
 #include "igaprep/pipeline/case.h"
 #include "igaprep/pipeline/run.h"
 #include "pipeline/pipeline_runs.h"
@@ -25,13 +27,18 @@ double figure(const iga_check::PipelineSection& p, const std::string& name) {
 
 const char* const kReduce = R"({"reduce": {"relative_tolerance": 0.001}, "validation": {"enabled": false}})";
 
-class ReducedBuiltInModel : public ::testing::TestWithParam<std::pair<std::string, std::string>> {};
+struct Fitted {
+  std::string model, fit;  // the case's "fit" section
+  bool certified;          // the fitted model passes its check
+};
 
-TEST_P(ReducedBuiltInModel, StaysCertifiedConformingAndWithinItsBound) {
-  const auto& [model, fit] = GetParam();
+class ReducedBuiltInModel : public ::testing::TestWithParam<Fitted> {};
+
+TEST_P(ReducedBuiltInModel, KeepsItsCertificatesConformityAndBound) {
+  const auto& [model, fit, certified] = GetParam();
   nlohmann::json extra = nlohmann::json::parse(kReduce);
   extra["fit"] = nlohmann::json::parse(fit);
-  const pipeline::Case c = pipeline_test::model_case(model, extra.dump(), "reduce_" + model);
+  const pipeline::Case c = pipeline_test::model_case(model, extra.dump(), "reduce_" + model + (fit == "{}" ? "" : "_12"));
   pipeline_test::Recorder observer;
   const pipeline::RunResult r = pipeline::run(c, observer);
   ASSERT_TRUE(r.report.pipeline.has_value());
@@ -48,9 +55,13 @@ TEST_P(ReducedBuiltInModel, StaysCertifiedConformingAndWithinItsBound) {
   EXPECT_LE(measured, bound);
   EXPECT_GT(measured, 0.0);
   EXPECT_LT(after, before);
-  // Certified and conforming, 1e-12 of the diagonal.
-  EXPECT_TRUE(r.report.passed) << r.report.verdict;
-  EXPECT_EQ(figure(p, "negative_elements"), 0.0);
+  // No element the fitted model's check certified lost its certificate, so
+  // a certified model stays certified; conforming, 1e-12 of the diagonal.
+  const double uncertified = figure(p, "negative_elements") + figure(p, "undecided_elements") +
+                             figure(p, "degenerate_elements");
+  EXPECT_LE(uncertified, figure(p, "reduce_uncertified_elements_before"));
+  if (certified) EXPECT_TRUE(r.report.passed) << r.report.verdict;
+  if (certified) EXPECT_EQ(uncertified, 0.0);
   EXPECT_TRUE(r.report.topology.conforming);
   EXPECT_LE(r.report.topology.interface_max_gap_relative, 1e-12);
 
@@ -62,14 +73,23 @@ TEST_P(ReducedBuiltInModel, StaysCertifiedConformingAndWithinItsBound) {
   }
   const std::string command = std::string(IGAPREP_CLI) + " check " + dir + "/model.h5 --case " + dir +
                               "/case.json --report " + dir + "/check > " + dir + "/check.log 2>&1";
-  EXPECT_EQ(std::system(command.c_str()), 0) << command;
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status)) << command;
+  EXPECT_EQ(WEXITSTATUS(status), r.report.passed ? 0 : 2) << command;
 }
 
+// At 12 elements per direction the fit is certified on sphere2 only: ring2
+// has 216 negative elements and torus3 193 before the Jacobian repair, which
+// at that size takes minutes (docs/spline.md, "Data reduction of a model").
+// The default fits (6 elements, repaired) are certified.
 INSTANTIATE_TEST_SUITE_P(
-    TwelveElements, ReducedBuiltInModel,
-    ::testing::Values(std::make_pair(std::string("sphere2"), std::string(R"({"elements": 12, "jacobian_target": 0})")),
-                      std::make_pair(std::string("ring2"), std::string(R"({"elements": 12})")),
-                      std::make_pair(std::string("torus3"), std::string(R"({"elements": 12})"))),
-    [](const auto& info) { return info.param.first; });
+    BuiltIn, ReducedBuiltInModel,
+    ::testing::Values(Fitted{"sphere2", R"({"elements": 12, "jacobian_target": 0})", true},
+                      Fitted{"ring2", R"({"elements": 12, "jacobian_target": 0})", false},
+                      Fitted{"torus3", R"({"elements": 12, "jacobian_target": 0})", false},
+                      Fitted{"ring2", "{}", true}, Fitted{"torus3", "{}", true}),
+    [](const auto& info) {
+      return info.param.model + (info.param.fit == "{}" ? std::string("_default_fit") : std::string("_12_elements"));
+    });
 
 }  // namespace

@@ -34,6 +34,7 @@ struct ReduceFigures {
   std::string limited_by;        // empty, or what lowered it ("fidelity T1", "volume region 0")
   long control_points_before = 0, control_points_after = 0;
   long elements_before = 0, elements_after = 0;
+  long uncertified_before = 0;  // elements the check did not certify (the reduced model has at most as many)
   int knots_removed = 0, removals_undone = 0, inconsistent_families = 0;
   double bound = 0.0;     // model units: no point of the model moved farther
   double measured = 0.0;  // the largest distance found at the sampled parameters

@@ -8,9 +8,10 @@
 // ones (the first and last row of each direction kept exactly, so a side's
 // points depend only on that side's points and both patches of an interface
 // compute the same side). Projected from the original each time, so errors do
-// not add up over removals. The bound of a patch is the exact control-point
-// change after re-inserting every removed knot (change_bound): no point of
-// the volume moves farther. A removal is made only if every patch it touches
+// not add up over removals. The bound of a patch is the control-point change
+// after re-inserting every removed knot (change_bound), or where that is above
+// the tolerance, the change in the basis with every span halved once more
+// (tighter): no point of the volume moves farther. A removal is made only if every patch it touches
 // keeps its bound within the tolerance; knots whose removal would cost least
 // go first.
 #include <array>

@@ -51,6 +51,8 @@ std::string volume_lost(const spline::MultiPatch& reduced, const iga_check::Chec
 
 // No element the check certified loses its certificate: the reduced patch,
 // refined back to the original's knots, is certified element by element.
+// Where every element was certified, the reduced patch's own (fewer, larger)
+// elements are tried first: positive there is positive on every part.
 spline::ReducedPatchCheck certificate_check(const spline::MultiPatch& mp, const iga_check::CheckReport& before,
                                             const iga_check::CheckOptions& options) {
   std::vector<std::vector<bool>> certified(mp.patches.size());
@@ -60,10 +62,17 @@ spline::ReducedPatchCheck certificate_check(const spline::MultiPatch& mp, const 
   iga_check::CertifyOptions certify = options.certify;
   certify.progress = nullptr;
   const bool allow_degenerate = options.allow_degenerate;
-  return [&mp, certified, certify, allow_degenerate](int patch, const spline::Patch& reduced) {
+  auto all_certified = [certify, allow_degenerate](const spline::Patch& p, int patch) {
+    for (const iga_check::ElementCertificate& c : iga_check::certify_patch(p, patch, certify))
+      if (!iga_check::element_certified(c, allow_degenerate)) return false;
+    return true;
+  };
+  return [&mp, certified, certify, allow_degenerate, all_certified](int patch, const spline::Patch& reduced) {
+    const std::vector<bool>& was = certified[static_cast<std::size_t>(patch)];
+    const bool whole = std::all_of(was.begin(), was.end(), [](bool b) { return b; });
+    if (whole && all_certified(reduced, patch)) return true;
     const spline::Patch& original = mp.patches[static_cast<std::size_t>(patch)];
     const auto certificates = iga_check::certify_patch(spline::refine_to_knots(reduced, original.knots), patch, certify);
-    const std::vector<bool>& was = certified[static_cast<std::size_t>(patch)];
     if (certificates.size() != was.size()) return false;
     for (std::size_t e = 0; e < was.size(); ++e)
       if (was[e] && !iga_check::element_certified(certificates[e], allow_degenerate)) return false;

@@ -9,6 +9,7 @@
 #include "igaprep/export/export_model.h"
 #include "igaprep/iga_check/elasticity_refine.h"
 #include "igaprep/iga_check/elasticity_solve.h"
+#include "igaprep/pipeline/reduce.h"
 
 namespace igaprep::python {
 
@@ -58,6 +59,27 @@ py::dict solve(const spline::MultiPatch& model, const py::object& fix, const std
                   py::arg("solver") = s.report.solver, py::arg("model") = py::cast(std::move(s.model)));
 }
 
+// Data reduction guarded by the model's own certificates (no surfaces).
+py::tuple reduce(const spline::MultiPatch& model, double tolerance, double relative_tolerance) {
+  pipeline::ReduceSettings settings;
+  settings.tolerance = tolerance;
+  settings.relative_tolerance = relative_tolerance;
+  pipeline::CheckedReduction r;
+  {
+    py::gil_scoped_release release;
+    pipeline::Observer quiet;
+    r = pipeline::reduce_checked(model, settings, {}, {}, quiet);
+  }
+  const pipeline::ReduceFigures& f = r.reduction.figures;
+  py::dict figures(py::arg("tolerance") = f.tolerance, py::arg("bound") = f.bound, py::arg("measured") = f.measured,
+                   py::arg("control_points_before") = f.control_points_before,
+                   py::arg("control_points_after") = f.control_points_after,
+                   py::arg("elements_before") = f.elements_before, py::arg("elements_after") = f.elements_after,
+                   py::arg("knots_removed") = f.knots_removed, py::arg("removals_undone") = f.removals_undone,
+                   py::arg("passed") = r.reduced.report.passed);
+  return py::make_tuple(py::cast(std::move(r.reduction.model)), figures);
+}
+
 std::vector<std::string> export_formats(const spline::MultiPatch& model, const std::vector<std::string>& formats,
                                         const std::string& base) {
   std::vector<exporter::Format> list;
@@ -81,6 +103,11 @@ void bind_analysis(py::module_& m) {
   m.def("refine", &iga_check::refine_for_analysis, py::arg("model"), py::arg("elevate") = 0, py::arg("refine") = 1,
         py::call_guard<py::gil_scoped_release>(),
         "Degree elevation by `elevate`, then `refine` uniform bisections of every knot span (same geometry).");
+  m.def("reduce", &reduce, py::arg("model"), py::arg("tolerance") = 0.0, py::arg("relative_tolerance") = 0.0,
+        "Data reduction (docs/spline.md): knots removed per family while no point moves farther than `tolerance`\n"
+        "(model units) or `relative_tolerance` (of the diagonal), give one; no element the model's check certified\n"
+        "loses its certificate. Returns (reduced model, figures: tolerance, bound, measured, control points and\n"
+        "elements before and after, knots_removed, removals_undone, passed = the reduced model's check).");
   m.def("export", &export_formats, py::arg("model"), py::arg("formats"), py::arg("base"),
         "Writes the model as base + .h5/.xml/.mesh/.vtu/.bext for formats hdf5, gismo, mfem, vtu, bext; returns the paths.");
 }

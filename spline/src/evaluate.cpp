@@ -194,13 +194,22 @@ void grid_homogeneous(const Patch& P, const GridBasis& G, int order,
   for (long i = 0; i < Hc.rows(); ++i)
     for (int c = 0; c < D; ++c) C[i * D + c] = Hc(i, c);
   const BasisTable &Tu = G.tables[0], &Tv = G.tables[1], &Tw = G.tables[2];
+  // Only the w-layers of control points the w parameters reach are
+  // contracted (a grid of one element's w parameters needs p + 1 of them):
+  // layers k_first .. k_first + layers - 1, stored from 0.
+  int k_first = nw, k_last = -1;
+  for (int k = 0; k < mw; ++k) {
+    k_first = std::min(k_first, Tw.span[k] - pw);
+    k_last = std::max(k_last, Tw.span[k]);
+  }
+  const int layers = std::max(0, k_last - k_first + 1);
   // Stage 1: contract u. T1[du][((k*nv + j)*mu + i)*D + c].
   std::vector<std::vector<double>> T1(order + 1);
   for (int du = 0; du <= order; ++du) {
     auto& out = T1[du];
-    out.assign(static_cast<size_t>(nw) * nv * mu * D, 0.0);
-    for (long row = 0; row < static_cast<long>(nw) * nv; ++row) {
-      const double* src = C.data() + row * nu * D;
+    out.assign(static_cast<size_t>(layers) * nv * mu * D, 0.0);
+    for (long row = 0; row < static_cast<long>(layers) * nv; ++row) {
+      const double* src = C.data() + (static_cast<long>(k_first) * nv + row) * nu * D;
       double* dst = out.data() + row * mu * D;
       for (int i = 0; i < mu; ++i) {
         const double* Nr = Tu.at(i, du);
@@ -218,8 +227,8 @@ void grid_homogeneous(const Patch& P, const GridBasis& G, int order,
   for (int du = 0; du <= order; ++du)
     for (int dv = 0; du + dv <= order; ++dv) {
       auto& out = T2[du * (order + 1) + dv];
-      out.assign(static_cast<size_t>(nw) * mv * rowlen, 0.0);
-      for (int k = 0; k < nw; ++k)
+      out.assign(static_cast<size_t>(layers) * mv * rowlen, 0.0);
+      for (int k = 0; k < layers; ++k)
         for (int j = 0; j < mv; ++j) {
           const double* Nr = Tv.at(j, dv);
           double* dst = out.data() + (static_cast<long>(k) * mv + j) * rowlen;
@@ -244,7 +253,7 @@ void grid_homogeneous(const Patch& P, const GridBasis& G, int order,
       double* dst = out.data() + k * slab;
       for (int r = 0; r <= pw; ++r) {
         const double f = Nr[r];
-        const double* src = in.data() + static_cast<long>(Tw.span[k] - pw + r) * slab;
+        const double* src = in.data() + static_cast<long>(Tw.span[k] - pw + r - k_first) * slab;
         for (long q = 0; q < slab; ++q) dst[q] += f * src[q];
       }
     }

@@ -140,3 +140,19 @@ def test_refine_keeps_the_geometry(sphere2):
     assert q.control_points.shape[0] == 2 * p.control_points.shape[0] - p.degrees[2]
     uvw = np.random.default_rng(1).random((20, 3))
     np.testing.assert_allclose(q.evaluate(uvw), p.evaluate(uvw), atol=1e-12)
+
+
+def test_reduce_takes_back_a_refinement_within_its_bound():
+    """A cube refined once is the same cube: reduction gives back 2 elements."""
+    coarse = cube(elements=2, degree=2)
+    fine = igaprep.refine(coarse, elevate=0, refine=1)
+    reduced, figures = igaprep.reduce(fine, tolerance=1e-9)
+    assert figures["control_points_before"] == 6 ** 3
+    assert figures["control_points_after"] == 3 ** 3  # the linear map needs no interior knot
+    assert figures["bound"] <= 1e-9
+    assert figures["measured"] <= figures["bound"] + 1e-14  # the bound is exact; evaluation rounds
+    assert figures["passed"]
+    uvw = np.random.default_rng(2).random((20, 3))
+    np.testing.assert_allclose(reduced.patches[0].evaluate(uvw), fine.patches[0].evaluate(uvw), atol=1e-12)
+    with pytest.raises(Exception, match="tolerance"):
+        igaprep.reduce(fine)

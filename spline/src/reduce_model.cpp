@@ -190,19 +190,27 @@ class Reducer {
     return out;
   }
 
-  // The patches of a family with its present kept knots; the largest bound
-  // (the quick one of patch_bound alone when `quick`).
-  double trial(int family, std::vector<std::pair<int, Patch>>* patches, std::vector<double>* bounds,
-               bool quick = false) const {
+  // How a trial measures: the bound patch_bound tightens above `tighten_above`,
+  // and the trial stops at the first patch whose bound passes `stop_above`.
+  struct Measure {
+    double tighten_above, stop_above;
+  };
+  Measure exact() const { return {tolerance_, tolerance_}; }
+  Measure quick() const { return {kNever, kQuickReach * tolerance_}; }
+  static constexpr double kNever = std::numeric_limits<double>::infinity();
+
+  // The patches of a family with its present kept knots; the largest bound.
+  double trial(int family, const Measure& m, std::vector<std::pair<int, Patch>>* patches,
+               std::vector<double>* bounds) const {
     double worst = 0.0;
     for (int p : patches_of_[static_cast<std::size_t>(family)]) {
       const Patch& original = mp_.patches[static_cast<std::size_t>(p)];
       Patch r = project_patch(original, kept_knots(p));
-      const double b = patch_bound(original, r, quick ? std::numeric_limits<double>::infinity() : tolerance_);
+      const double b = patch_bound(original, r, m.tighten_above);
       worst = std::max(worst, b);
       if (patches) patches->emplace_back(p, std::move(r));
       if (bounds) bounds->push_back(b);
-      if (worst > (quick ? kQuickReach : 1.0) * tolerance_) break;
+      if (worst > m.stop_above) break;
     }
     return worst;
   }
@@ -230,7 +238,7 @@ class Reducer {
     std::vector<Candidate> affordable;
     for (std::size_t i = 0; i < all.size(); ++i) {
       set_kept(all[i], false);
-      all[i].cost = trial(all[i].family, nullptr, nullptr, true);
+      all[i].cost = trial(all[i].family, quick(), nullptr, nullptr);
       set_kept(all[i], true);
       if (all[i].cost <= kQuickReach * tolerance_) affordable.push_back(all[i]);
       bar.update(i + 1);
@@ -244,7 +252,7 @@ class Reducer {
     set_kept(c, false);
     std::vector<std::pair<int, Patch>> patches;
     std::vector<double> bounds;
-    if (trial(c.family, &patches, &bounds) > tolerance_) {
+    if (trial(c.family, exact(), &patches, &bounds) > tolerance_) {
       set_kept(c, true);
       return false;
     }
@@ -274,10 +282,7 @@ class Reducer {
     set_kept({r.family, r.knots, 0.0}, true);
     std::vector<std::pair<int, Patch>> patches;
     std::vector<double> bounds;
-    const double saved = tolerance_;
-    tolerance_ = std::numeric_limits<double>::infinity();  // fewer knots removed: within the bound again
-    trial(r.family, &patches, &bounds);
-    tolerance_ = saved;
+    trial(r.family, {kNever, kNever}, &patches, &bounds);  // fewer knots removed: within the bound again
     std::vector<int> changed;
     for (std::size_t i = 0; i < patches.size(); ++i) {
       changed.push_back(patches[i].first);
@@ -288,7 +293,7 @@ class Reducer {
   }
 
   const MultiPatch& mp_;
-  double tolerance_;
+  const double tolerance_;
   std::vector<KnotFamily> families_;
   std::vector<std::vector<char>> kept_;               // per family, per family knot: still there
   std::vector<std::pair<int, bool>> member_of_;       // per (patch, direction): family, reversed

@@ -17,6 +17,7 @@
 #include "igaprep/pipeline/surfaces.h"
 #include "igaprep/pipeline/validation.h"
 #include "igaprep/pipeline/volume.h"
+#include "igaprep/spline/multipatch_topology.h"
 #include "stage_timer.h"
 #include "igaprep/core/text.h"
 
@@ -24,12 +25,6 @@ namespace igaprep::pipeline {
 namespace {
 
 namespace fs = std::filesystem;
-
-long count_control_points(const spline::MultiPatch& mp) {
-  long n = 0;
-  for (const auto& p : mp.patches) n += static_cast<long>(p.control_points.rows());
-  return n;
-}
 
 // The reduction's figures (docs/check-report.md); the model's counts above are the reduced model's.
 void add_reduce_figures(const ReduceFigures& r, iga_check::PipelineSection& p) {
@@ -65,7 +60,7 @@ iga_check::PipelineSection pipeline_section(const Case& c, const param::Midsurfa
   add("degree", degree);
   add("elements_per_direction", elements_per_direction);  // of patch 0, direction u (before any knot insertion)
   add("elements", static_cast<double>(check.elements));
-  add("control_points", static_cast<double>(count_control_points(mp)));
+  add("control_points", static_cast<double>(spline::control_point_count(mp)));
   add("interfaces", static_cast<double>(mp.interfaces.size()));
   add("boundary_sides", static_cast<double>(mp.boundaries.size()));
   add("unmatched_sides", fit.unmatched_sides);

@@ -205,6 +205,12 @@ ConformityReport check_conformity(const MultiPatch& mp, double tol) {
   return rep;
 }
 
+long control_point_count(const MultiPatch& mp) {
+  long n = 0;
+  for (const Patch& p : mp.patches) n += static_cast<long>(p.control_points.rows());
+  return n;
+}
+
 GlobalNumbering global_numbering(const MultiPatch& mp) {
   GlobalNumbering g;
   std::vector<long> offset(mp.patches.size() + 1, 0);

@@ -48,25 +48,12 @@ double patch_bound(const Patch& original, const Patch& reduced, double limit) {
   const Patch same_basis = refine_to_knots(reduced, original.knots);
   const double bound = change_bound(original, same_basis);
   if (bound <= limit) return bound;
-  std::array<std::vector<double>, 3> finer;
-  for (int d = 0; d < 3; ++d) {
-    finer[d] = original.knots[d];
-    const std::vector<double> breaks = unique_knots(original.knots[d]);
-    for (std::size_t e = 0; e + 1 < breaks.size(); ++e) finer[d].push_back(0.5 * (breaks[e] + breaks[e + 1]));
-    std::sort(finer[d].begin(), finer[d].end());
-  }
-  return std::min(bound, change_bound(refine_to_knots(original, finer), refine_to_knots(same_basis, finer)));
+  return std::min(bound, change_bound(refine_uniformly(original), refine_uniformly(same_basis)));
 }
 
 long element_count(const Patch& p) {
   long n = 1;
   for (int d = 0; d < 3; ++d) n *= static_cast<long>(unique_knots(p.knots[d]).size()) - 1;
-  return n;
-}
-
-long control_point_count(const MultiPatch& mp) {
-  long n = 0;
-  for (const Patch& p : mp.patches) n += static_cast<long>(p.control_points.rows());
   return n;
 }
 
@@ -124,7 +111,6 @@ class Reducer {
       patches_of_.emplace_back(patches.begin(), patches.end());
     }
     reduced_ = mp.patches;
-    bound_.assign(mp.patches.size(), 0.0);
   }
 
   const std::vector<KnotFamily>& families() const { return families_; }
@@ -200,8 +186,7 @@ class Reducer {
   static constexpr double kNever = std::numeric_limits<double>::infinity();
 
   // The patches of a family with its present kept knots; the largest bound.
-  double trial(int family, const Measure& m, std::vector<std::pair<int, Patch>>* patches,
-               std::vector<double>* bounds) const {
+  double trial(int family, const Measure& m, std::vector<std::pair<int, Patch>>* patches) const {
     double worst = 0.0;
     for (int p : patches_of_[static_cast<std::size_t>(family)]) {
       const Patch& original = mp_.patches[static_cast<std::size_t>(p)];
@@ -209,7 +194,6 @@ class Reducer {
       const double b = patch_bound(original, r, m.tighten_above);
       worst = std::max(worst, b);
       if (patches) patches->emplace_back(p, std::move(r));
-      if (bounds) bounds->push_back(b);
       if (worst > m.stop_above) break;
     }
     return worst;
@@ -238,9 +222,9 @@ class Reducer {
     std::vector<Candidate> affordable;
     for (std::size_t i = 0; i < all.size(); ++i) {
       set_kept(all[i], false);
-      all[i].cost = trial(all[i].family, quick(), nullptr, nullptr);
+      all[i].cost = trial(all[i].family, quick(), nullptr);
       set_kept(all[i], true);
-      if (all[i].cost <= kQuickReach * tolerance_) affordable.push_back(all[i]);
+      if (all[i].cost <= quick().stop_above) affordable.push_back(all[i]);
       bar.update(i + 1);
     }
     return affordable;
@@ -251,15 +235,11 @@ class Reducer {
       if (!kept_[static_cast<std::size_t>(c.family)][static_cast<std::size_t>(k)]) return false;
     set_kept(c, false);
     std::vector<std::pair<int, Patch>> patches;
-    std::vector<double> bounds;
-    if (trial(c.family, exact(), &patches, &bounds) > tolerance_) {
+    if (trial(c.family, exact(), &patches) > tolerance_) {
       set_kept(c, true);
       return false;
     }
-    for (std::size_t i = 0; i < patches.size(); ++i) {
-      reduced_[static_cast<std::size_t>(patches[i].first)] = std::move(patches[i].second);
-      bound_[static_cast<std::size_t>(patches[i].first)] = bounds[i];
-    }
+    for (auto& [p, patch] : patches) reduced_[static_cast<std::size_t>(p)] = std::move(patch);
     log_.push_back({c.family, c.knots, false});
     return true;
   }
@@ -281,13 +261,11 @@ class Reducer {
     ++undone_;
     set_kept({r.family, r.knots, 0.0}, true);
     std::vector<std::pair<int, Patch>> patches;
-    std::vector<double> bounds;
-    trial(r.family, {kNever, kNever}, &patches, &bounds);  // fewer knots removed: within the bound again
+    trial(r.family, {kNever, kNever}, &patches);  // fewer knots removed: within the bound again
     std::vector<int> changed;
-    for (std::size_t i = 0; i < patches.size(); ++i) {
-      changed.push_back(patches[i].first);
-      reduced_[static_cast<std::size_t>(patches[i].first)] = std::move(patches[i].second);
-      bound_[static_cast<std::size_t>(patches[i].first)] = bounds[i];
+    for (auto& [p, patch] : patches) {
+      changed.push_back(p);
+      reduced_[static_cast<std::size_t>(p)] = std::move(patch);
     }
     return changed;
   }
@@ -299,7 +277,6 @@ class Reducer {
   std::vector<std::pair<int, bool>> member_of_;       // per (patch, direction): family, reversed
   std::vector<std::vector<int>> patches_of_;          // per family: its patches, increasing
   std::vector<Patch> reduced_;
-  std::vector<double> bound_;
   std::vector<Removal> log_;
   int undone_ = 0;
 };

@@ -40,6 +40,10 @@ struct ConformityReport {
 // errors (bad side, count mismatch) are reported as problems too.
 ConformityReport check_conformity(const MultiPatch& mp, double tol);
 
+// Control points summed over the patches (points shared by interfaces counted
+// in each patch, as the model files store them).
+long control_point_count(const MultiPatch& mp);
+
 struct GlobalNumbering {
   int count = 0;                          // number of distinct control points
   std::vector<std::vector<int>> global;   // global[patch][local] in 0..count-1

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -84,41 +85,54 @@ OutputFolder::~OutputFolder() {
   fs::remove_all(staging_, ec);
 }
 
-void OutputFolder::commit() {
+void OutputFolder::commit(const std::vector<std::string>& summaries) {
   if (committed_) throw internal_error("OutputFolder: committed twice");
-  if (atomic_ && holds_files_only(real_)) commit_by_exchange();
-  else commit_file_by_file();
+  if (atomic_ && holds_files_only(real_)) commit_by_exchange(summaries);
+  else commit_file_by_file(summaries);
   committed_ = true;
 }
 
-void OutputFolder::commit_by_exchange() {
+void OutputFolder::commit_by_exchange(const std::vector<std::string>& summaries) {
   // The folder's other files go into the new one too (hard links: the same
   // files, nothing copied), so the swap keeps them.
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(real_, ec)) {
     const fs::path target = fs::path(staging_) / entry.path().filename();
     if (fs::exists(fs::symlink_status(target, ec))) continue;
-    if (::linkat(AT_FDCWD, entry.path().c_str(), AT_FDCWD, target.c_str(), 0) != 0) return commit_file_by_file();
+    if (::linkat(AT_FDCWD, entry.path().c_str(), AT_FDCWD, target.c_str(), 0) != 0) return commit_file_by_file(summaries);
   }
-  if (ec) return commit_file_by_file();
+  if (ec) return commit_file_by_file(summaries);
   sync_folder(staging_);
   // The resolved folder: a symlink named as the output folder stays a symlink.
   if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, real_.c_str(), RENAME_EXCHANGE) != 0) {
-    if (errno == EINVAL || errno == ENOSYS || errno == ENOTSUP) return commit_file_by_file();
+    if (errno == EINVAL || errno == ENOSYS || errno == ENOTSUP) return commit_file_by_file(summaries);
     throw bad_input("cannot put the outputs into '" + dir_ + "': " + std::strerror(errno));
   }
   sync_folder_of(real_);  // the parent: both names changed there
   fs::remove_all(staging_, ec);  // now the previous folder; a killed run's is removed by the next
 }
 
-void OutputFolder::commit_file_by_file() {
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(staging_, ec)) {
-    const fs::path target = fs::path(dir_) / entry.path().filename();
-    if (std::rename(entry.path().c_str(), target.c_str()) != 0)
+void OutputFolder::commit_file_by_file(const std::vector<std::string>& summaries) {
+  auto is_summary = [&](const fs::path& name) {
+    return std::find(summaries.begin(), summaries.end(), name.string()) != summaries.end();
+  };
+  auto put_in_place = [&](const fs::path& staged) {
+    const fs::path target = fs::path(dir_) / staged.filename();
+    if (std::rename(staged.c_str(), target.c_str()) != 0)
       throw bad_input("cannot put '" + target.string() + "' in place: " + std::strerror(errno));
+  };
+  std::error_code ec;
+  for (const std::string& name : summaries)
+    if (fs::exists(fs::path(staging_) / name, ec)) fs::remove(fs::path(dir_) / name, ec);
+  sync_folder(dir_);
+  std::vector<fs::path> last;
+  for (const auto& entry : fs::directory_iterator(staging_, ec)) {
+    if (is_summary(entry.path().filename())) last.push_back(entry.path());
+    else put_in_place(entry.path());
   }
   if (ec) throw bad_input("cannot read the staged outputs in '" + staging_ + "': " + ec.message());
+  sync_folder(dir_);
+  for (const fs::path& staged : last) put_in_place(staged);
   sync_folder(dir_);
   fs::remove_all(staging_, ec);
 }

@@ -107,7 +107,7 @@ void write_report_and_commit(RunResult& r, OutputFolder* folder) {
   r.report.pipeline->outputs.push_back("report.json");
   r.report.pipeline->outputs.push_back("report.html");
   iga_check::write_report(r.report, folder->staging());
-  folder->commit();
+  folder->commit({"report.json", "report.html"});
 }
 
 // The load case's solve; on failure the report so far is written, then the

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "igaprep/core/error.h"
 #include "igaprep/core/output_folder.h"
 
 namespace {
@@ -97,6 +98,35 @@ TEST(OutputFolder, AFolderWithASubfolderGetsItsFilesOneByOne) {
   EXPECT_EQ(read(out / "model.h5"), "new model");
   EXPECT_EQ(read(out / "mine" / "data.txt"), "kept");
   EXPECT_EQ(entries_naming(out, ".igaprep-"), 0);
+}
+
+// One by one, a commit stopped midway (here: a subfolder named as a staged
+// file, which no rename can replace) leaves no report about a mix of old
+// and new files: the old report goes first, the new one last.
+TEST(OutputFolder, OneByOneTheReportGoesLastAndItsOldCopyFirst) {
+  const fs::path root = fresh("summaries");
+  const fs::path out = root / "out";
+  fs::create_directories(out / "model.h5");
+  write(out / "model.h5" / "data", "in the way");
+  write(out / "report.json", "old report: PASS");
+  write(out / "mesh.vtu", "old mesh");
+  igaprep::OutputFolder folder(out.string());
+  EXPECT_FALSE(folder.atomic());
+  write(fs::path(folder.staging()) / "model.h5", "new model");
+  write(fs::path(folder.staging()) / "report.json", "new report");
+  EXPECT_THROW(folder.commit({"report.json"}), igaprep::Error);
+  EXPECT_FALSE(fs::exists(out / "report.json"));
+  EXPECT_EQ(read(out / "model.h5" / "data"), "in the way");
+
+  const fs::path clear = root / "clear";
+  fs::create_directories(clear / "mine");
+  write(clear / "report.json", "old report");
+  igaprep::OutputFolder second(clear.string());
+  write(fs::path(second.staging()) / "model.h5", "new model");
+  write(fs::path(second.staging()) / "report.json", "new report");
+  second.commit({"report.json"});
+  EXPECT_EQ(read(clear / "report.json"), "new report");
+  EXPECT_EQ(read(clear / "model.h5"), "new model");
 }
 
 TEST(OutputFolder, StagingFoldersOfProcessesThatEndedAreRemoved) {

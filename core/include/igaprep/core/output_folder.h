@@ -11,8 +11,11 @@
 // than files (moving it could strand it), it is the working folder or
 // holds it (a shell in it would be left in the old one), it is a mount
 // point, its parent takes no new folder, or the file system has no
-// RENAME_EXCHANGE. `atomic()` says which.
+// RENAME_EXCHANGE. `atomic()` says which. Then the files that describe the
+// others (a run's report) go last and their old copies first, so that a
+// process killed midway leaves no such file rather than one about a mix.
 #include <string>
+#include <vector>
 
 namespace igaprep {
 
@@ -32,12 +35,14 @@ class OutputFolder {
   bool committed() const { return committed_; }
 
   // Puts the staged files in place (see above) and removes the staging
-  // folder. Throws bad_input when the file system refuses.
-  void commit();
+  // folder. summaries: names of the staged files that describe the others
+  // (moved last, their old copies removed first, when not atomic). Throws
+  // bad_input when the file system refuses.
+  void commit(const std::vector<std::string>& summaries = {});
 
  private:
-  void commit_by_exchange();
-  void commit_file_by_file();
+  void commit_by_exchange(const std::vector<std::string>& summaries);
+  void commit_file_by_file(const std::vector<std::string>& summaries);
 
   std::string dir_;
   std::string real_;  // dir_ with symlinks resolved: the folder the swap replaces

@@ -94,22 +94,77 @@ struct OffsetFunction {
   }
 };
 
-// Local thickness under each input vertex: length of the inward ray to the
-// next hit of the surface. Used only to suggest a working D.
-double thickness_percentile(const SurfaceMesh& sm, const Tree& tree, double eps, double q) {
+// Local thickness: the length of the inward ray to the next hit of the
+// surface, under each input vertex and (with_faces) each face centre, which
+// sees a coarse mesh's thinnest places, face to face; ascending. Used only
+// to say why an offset failed and to suggest a working D.
+std::vector<double> thickness_samples(const SurfaceMesh& sm, const Tree& tree, double eps, bool with_faces) {
   std::vector<double> t;
+  auto inward_ray_length = [&](const Point3& at, const Kernel::Vector_3& n) {
+    const Point3 p = at - eps * n;
+    auto hit = tree.first_intersection(Kernel::Ray_3(p, -n));
+    if (!hit) return;
+    if (const Point3* q3 = boost::get<Point3>(&hit->first)) t.push_back(std::sqrt(CGAL::squared_distance(p, *q3)));
+  };
   auto vnormals = sm.property_map<SurfaceMesh::Vertex_index, Kernel::Vector_3>("v:offset_normal").first;
+  for (auto v : sm.vertices()) inward_ray_length(sm.point(v), vnormals[v]);
+  if (with_faces)
+    for (auto f : sm.faces()) {
+      const auto h = sm.halfedge(f);
+      const Point3 c = CGAL::centroid(sm.point(sm.source(h)), sm.point(sm.target(h)), sm.point(sm.target(sm.next(h))));
+      inward_ray_length(c, PMP::compute_face_normal(f, sm));
+    }
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
+double percentile(const std::vector<double>& sorted, double q) {
+  return sorted.empty() ? 0.0 : sorted[static_cast<std::size_t>(q * static_cast<double>(sorted.size() - 1))];
+}
+
+// Seeds of the offset surface: under each input vertex, where f changes
+// sign between depth D/2 and 3D/2 along the inward normal, at least
+// `spacing` apart (0: all of them); lo: the input's lowest corner.
+template <class Normals>
+void seed_offset(C3t3& c3t3, const SurfaceMesh& sm, const Normals& vnormals, const Domain& domain,
+                 const OffsetFunction& f, double D, double spacing, const Eigen::RowVector3d& lo) {
+  std::unordered_map<std::uint64_t, std::vector<Point3>> grid;
+  auto cell_of = [&](const Point3& p, int dx, int dy, int dz) {
+    const std::uint64_t ix = static_cast<std::uint64_t>(std::floor((p.x() - lo(0)) / spacing) + 2 + dx);
+    const std::uint64_t iy = static_cast<std::uint64_t>(std::floor((p.y() - lo(1)) / spacing) + 2 + dy);
+    const std::uint64_t iz = static_cast<std::uint64_t>(std::floor((p.z() - lo(2)) / spacing) + 2 + dz);
+    return (ix * 1000003ULL + iy) * 1000003ULL + iz;
+  };
+  auto near_a_seed = [&](const Point3& p) {
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          auto it = grid.find(cell_of(p, dx, dy, dz));
+          if (it == grid.end()) continue;
+          for (const Point3& q : it->second)
+            if (CGAL::squared_distance(p, q) < spacing * spacing) return true;
+        }
+    return false;
+  };
+  auto intersect = domain.construct_intersection_object();
+  auto cwp = c3t3.triangulation().geom_traits().construct_weighted_point_3_object();
   for (auto v : sm.vertices()) {
     const Kernel::Vector_3 n = vnormals[v];
-    const Point3 p = sm.point(v) - eps * n;
-    const Kernel::Ray_3 ray(p, -n);
-    auto hit = tree.first_intersection(ray);
-    if (!hit) continue;
-    if (const Point3* q3 = boost::get<Point3>(&hit->first)) t.push_back(std::sqrt(CGAL::squared_distance(p, *q3)));
+    const Point3 a = sm.point(v) - 0.5 * D * n, b = sm.point(v) - 1.5 * D * n;
+    if (!(f(a) > 0 && f(b) < 0)) continue;
+    const auto hit = intersect(Kernel::Segment_3(a, b));
+    if (std::get<2>(hit) == 0) continue;
+    const Point3 p = std::get<0>(hit);
+    if (spacing > 0) {
+      if (near_a_seed(p)) continue;
+      grid[cell_of(p, 0, 0, 0)].push_back(p);
+    }
+    auto vh = c3t3.triangulation().insert(cwp(p));
+    if (vh != Tr::Vertex_handle()) {
+      c3t3.set_dimension(vh, 2);
+      c3t3.set_index(vh, std::get<1>(hit));
+    }
   }
-  if (t.empty()) return 0;
-  std::sort(t.begin(), t.end());
-  return t[static_cast<std::size_t>(q * (t.size() - 1))];
 }
 
 }  // namespace
@@ -142,55 +197,31 @@ TriMesh offset_inward(const TriMesh& surface, const OffsetOptions& options) {
       f, Kernel::Sphere_3(c, radius * radius),
       CGAL::parameters::relative_error_bound = 1e-6, CGAL::parameters::p_rng = &rng);
 
-  // Seeds: under each input vertex, where the function changes sign between
-  // depth D/2 and 3D/2 along the inward normal, keeping seeds about 0.7 h apart.
   auto vnormals = sm.add_property_map<SurfaceMesh::Vertex_index, Kernel::Vector_3>("v:offset_normal").first;
   PMP::compute_vertex_normals(sm, vnormals);
+  // Seeds about 0.7 h apart; a coarse input (an icosahedron) has so few
+  // vertices that this leaves fewer than the 4 seeds meshing needs: then
+  // every vertex's seed.
   C3t3 c3t3;
-  {
-    const double spacing = 0.7 * h;
-    std::unordered_map<std::uint64_t, std::vector<Point3>> grid;
-    auto cell_of = [&](const Point3& p, int dx, int dy, int dz) {
-      const std::uint64_t ix = static_cast<std::uint64_t>(std::floor((p.x() - lo(0)) / spacing) + 2 + dx);
-      const std::uint64_t iy = static_cast<std::uint64_t>(std::floor((p.y() - lo(1)) / spacing) + 2 + dy);
-      const std::uint64_t iz = static_cast<std::uint64_t>(std::floor((p.z() - lo(2)) / spacing) + 2 + dz);
-      return (ix * 1000003ULL + iy) * 1000003ULL + iz;
-    };
-    auto intersect = domain.construct_intersection_object();
-    auto cwp = c3t3.triangulation().geom_traits().construct_weighted_point_3_object();
-    for (auto v : sm.vertices()) {
-      const Kernel::Vector_3 n = vnormals[v];
-      const Point3 a = sm.point(v) - 0.5 * D * n, b = sm.point(v) - 1.5 * D * n;
-      if (!(f(a) > 0 && f(b) < 0)) continue;
-      const auto hit = intersect(Kernel::Segment_3(a, b));
-      if (std::get<2>(hit) == 0) continue;
-      const Point3 p = std::get<0>(hit);
-      bool near = false;
-      for (int dx = -1; dx <= 1 && !near; ++dx)
-        for (int dy = -1; dy <= 1 && !near; ++dy)
-          for (int dz = -1; dz <= 1 && !near; ++dz) {
-            auto it = grid.find(cell_of(p, dx, dy, dz));
-            if (it == grid.end()) continue;
-            for (const Point3& q : it->second)
-              if (CGAL::squared_distance(p, q) < spacing * spacing) near = true;
-          }
-      if (near) continue;
-      grid[cell_of(p, 0, 0, 0)].push_back(p);
-      auto vh = c3t3.triangulation().insert(cwp(p));
-      if (vh != Tr::Vertex_handle()) {
-        c3t3.set_dimension(vh, 2);
-        c3t3.set_index(vh, std::get<1>(hit));
-      }
-    }
+  seed_offset(c3t3, sm, vnormals, domain, f, D, 0.7 * h, lo);
+  if (c3t3.triangulation().number_of_vertices() < 4) {
+    c3t3 = C3t3();
+    seed_offset(c3t3, sm, vnormals, domain, f, D, 0.0, lo);
   }
 
   auto refuse = [&](const std::string& what) {
-    const double t5 = thickness_percentile(sm, tree, 1e-9 * diag, 0.05);
-    double suggest = 0.5 * t5;
-    if (!(suggest > 0) || suggest >= D) suggest = 0.5 * D;
-    return bad_input("offset_inward: offsetting by D = " + fmt(D) + " " + what +
-                     ": the solid is thinner than 2 D = " + fmt(2 * D) + " somewhere; try D < " + fmt(suggest) +
-                     " (half the 5th percentile of the local thickness)");
+    const double t5 = percentile(thickness_samples(sm, tree, 1e-9 * diag, false), 0.05);
+    const double thinnest = percentile(thickness_samples(sm, tree, 1e-9 * diag, true), 0.0);
+    const std::string head = "offset_inward: offsetting by D = " + fmt(D) + " " + what;
+    // Nowhere thinner than 2 D: halving D would not help (it did not on a coarse mesh).
+    if (thinnest > 2 * D)
+      return bad_input(head + ": the solid is nowhere thinner than 2 D = " + fmt(2 * D) + " (" + fmt(thinnest) +
+                       " at least), so the cause is the mesh: its mean edge " + fmt(h) +
+                       " is too long to carry the offset surface; remesh the surface finer");
+    const bool below = 0.5 * t5 < D;  // else the thin places are fewer than 5 %
+    return bad_input(head + ": the solid is thinner than 2 D = " + fmt(2 * D) + " somewhere (down to " + fmt(thinnest) +
+                     "); try D < " + fmt(below ? 0.5 * t5 : 0.5 * thinnest) +
+                     (below ? " (half the 5th percentile of the local thickness)" : " (half the thinnest place)"));
   };
 
   if (c3t3.triangulation().number_of_vertices() < 4) {

@@ -78,6 +78,46 @@ TEST(Offset, RefusesBadDistance) {
   }
 }
 
+TriMesh icosahedron() {
+  const double t = 0.5 * (1.0 + std::sqrt(5.0));
+  TriMesh m;
+  m.V.resize(12, 3);
+  m.V << -1, t, 0, 1, t, 0, -1, -t, 0, 1, -t, 0, 0, -1, t, 0, 1, t, 0, -1, -t, 0, 1, -t, t, 0, -1, t, 0, 1, -t, 0, -1,
+      -t, 0, 1;
+  m.F.resize(20, 3);
+  m.F << 0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4, 11, 10, 2, 10, 7, 6, 7, 1, 8, 3, 9, 4, 3, 4,
+      2, 3, 2, 6, 3, 6, 8, 3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1;
+  return m;
+}
+
+// Issue 21, item 13: on a coarse mesh the offset refused every D, and its
+// message always suggested halving D, which never helped. The seeds were
+// spaced by the mesh's long edges (fewer than 4 left); and the thickness
+// under the vertices missed the thinnest places, between face centres.
+TEST(Offset, MisleadingMessagesOnACoarseMesh) {
+  const TriMesh ico = icosahedron();  // inradius 1.51, circumradius 1.90
+  const TriMesh inner = igaprep::mesh::offset_inward(ico, {0.5});
+  EXPECT_EQ(igaprep::mesh::check_surface(inner, "offset").genus, 0);
+  EXPECT_GT(igaprep::mesh::enclosed_volume(inner), 0.0);
+  EXPECT_LT(igaprep::mesh::enclosed_volume(inner), igaprep::mesh::enclosed_volume(ico));
+  try {
+    igaprep::mesh::offset_inward(ico, {1.6});
+    FAIL() << "an offset deeper than the inradius was accepted";
+  } catch (const igaprep::Error& e) {
+    const std::string msg = e.what();
+    EXPECT_EQ(e.kind(), igaprep::ErrorKind::BadInput) << msg;
+    EXPECT_NE(msg.find("thinner than 2 D = 3.2"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("try D < 1.51"), std::string::npos) << msg;  // the inradius, face to face
+  }
+  try {  // thick enough (3.02 face to face), but the inner shape's inradius of 0.11 is far below an edge of 2
+    igaprep::mesh::offset_inward(ico, {1.4});
+  } catch (const igaprep::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("nowhere thinner than 2 D = 2.8 (3.02 at least), so the cause is the mesh"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Offset, PelvisCorticalShell) {
   if (!std::filesystem::exists(pelvis_path())) GTEST_SKIP() << "shared model " << pelvis_path() << " is absent";
   const TriMesh outer = igaprep::mesh::read_surface(pelvis_path());

@@ -6,7 +6,13 @@ patch numbers are Geometry ids mapped through <patches>, and the normal
 direction's dirmap/orient entries are set as G+Smo sets them. Prints JSON:
 {"patches": [{"type", "degrees", "knots", "weights", "coefs"}...],
  "interfaces": [[p1, s1, p2, s2, m0, m1, m2, o0, o1, o2, name]...],
- "boundaries": [[patch, side, name]...]}
+ "boundaries": [[patch, side, name]...],
+ "conditions": [[type, function, unknown, name]...], "functions": {index: [c...]},
+ "materials": [{"Material", "YoungsModulus", "PoissonsRatio", "Patches"}...],
+ "displacement": [coefs per patch] (only with a second MultiPatch)}
+Follows G+Smo's gsBoundaryConditions reader (multipatch = the MultiPatch's
+id, <Function index> with <c> components, <bc type function unknown name>)
+and gsOptionList's (<real|int|bool|string label desc value>).
 """
 import json
 import sys
@@ -28,6 +34,34 @@ def tensor_basis(node):
         degrees.append(int(kv.get("degree")))
         knots.append(numbers(kv.text))
     return degrees, knots
+
+
+def patch_range(mp):
+    pnode = mp.find("patches")
+    assert pnode.get("type") == "id_range"
+    first, last = numbers(pnode.text, int)
+    return first, last
+
+
+def read_conditions(root, multipatch_id, out):
+    bcs = root.findall("boundaryConditions")
+    assert len(bcs) == 1
+    assert int(bcs[0].get("multipatch")) == multipatch_id
+    out["functions"] = {}
+    for f in bcs[0].findall("Function"):
+        assert int(f.get("dim")) == 3
+        out["functions"][int(f.get("index"))] = [c.text for c in f.findall("c")]
+    out["conditions"] = [[b.get("type"), int(b.get("function")), int(b.get("unknown")), b.get("name")]
+                         for b in bcs[0].findall("bc")]
+
+
+def options(node):
+    result = {}
+    for o in node:
+        assert o.get("desc") is not None
+        value = o.get("value")
+        result[o.get("label")] = float(value) if o.tag == "real" else value
+    return result
 
 
 def main():
@@ -57,13 +91,19 @@ def main():
         geometries[gid] = {"type": g.get("type"), "degrees": degrees, "knots": knots,
                            "weights": weights, "coefs": [flat[3 * i:3 * i + 3] for i in range(n)]}
 
-    mp = root.find("MultiPatch")
+    multipatches = root.findall("MultiPatch")
+    mp = multipatches[0]
     assert int(mp.get("parDim")) == 3
-    pnode = mp.find("patches")
-    assert pnode.get("type") == "id_range"
-    first, last = numbers(pnode.text, int)
+    first, last = patch_range(mp)
     ids = {gid: gid - first for gid in range(first, last + 1)}
     patches = [geometries[gid] for gid in range(first, last + 1)]
+    out = {"patches": patches}
+    if len(multipatches) > 1:
+        f2, l2 = patch_range(multipatches[1])
+        assert l2 - f2 == last - first
+        out["displacement"] = [geometries[gid]["coefs"] for gid in range(f2, l2 + 1)]
+    read_conditions(root, int(mp.get("id")), out)
+    out["materials"] = [options(o) for o in root.findall("OptionList")]
 
     interfaces = []
     for inode in mp.findall("interfaces"):
@@ -84,7 +124,8 @@ def main():
         vals = numbers(bnode.text, int)
         for r in range(0, len(vals), 2):
             boundaries.append([ids[vals[r]], vals[r + 1], name])
-    print(json.dumps({"patches": patches, "interfaces": interfaces, "boundaries": boundaries}))
+    out["interfaces"], out["boundaries"] = interfaces, boundaries
+    print(json.dumps(out))
 
 
 if __name__ == "__main__":

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <sstream>
 
 #include "igaprep/core/error.h"
 #include "igaprep/export/gismo_xml.h"
@@ -69,6 +70,56 @@ TEST(GismoXml, IndependentReaderGetsTheModelBack) {
   for (const auto& r : g["boundaries"]) gb.insert(row(r));
   EXPECT_EQ(gb, eb);
   EXPECT_EQ(gb.size(), 16u);
+  EXPECT_EQ(g.contains("displacement"), mp.has_solution);
+  std::filesystem::remove_all(dir);
+}
+
+// Issue 23, item 4: materials as gsOptionLists, a boundary-condition
+// template naming every labelled group, and a solve result's displacement
+// as a second multipatch on the same bases (it was silently dropped).
+TEST(GismoXml, MaterialsBoundaryConditionsAndTheDisplacementAreWritten) {
+  const std::string dir = scratch_dir("gismo_bc");
+  MultiPatch mp = make_test_model();
+  for (std::size_t i = 0; i < mp.patches.size(); ++i) {
+    auto& p = mp.patches[i];
+    p.displacement = p.control_points * 1e-3 + Eigen::MatrixXd::Constant(p.control_points.rows(), 3, 0.1 * i);
+  }
+  mp.has_solution = true;
+  mp.strain_energy = 2.5;
+  igaprep::exporter::write_gismo_xml(mp, dir + "/m.xml");
+  const json g = run_reader("read_gismo.py", dir + "/m.xml");
+
+  std::set<std::string> labels;
+  for (const auto& b : mp.boundaries) labels.insert(mp.labels[b.label]);
+  std::set<std::string> named;
+  for (const auto& c : g["conditions"]) {
+    EXPECT_EQ(c[0], "Neumann");
+    EXPECT_EQ(c[1], 0);
+    EXPECT_EQ(c[2], 0);
+    named.insert(c[3].get<std::string>());
+  }
+  EXPECT_EQ(named, labels);
+  EXPECT_EQ(g["functions"]["0"], json({"0", "0", "0"}));
+
+  ASSERT_EQ(g["materials"].size(), mp.materials.size());
+  std::vector<int> material_of(mp.patches.size(), -1);
+  for (std::size_t m = 0; m < mp.materials.size(); ++m) {
+    const json& o = g["materials"][m];
+    EXPECT_EQ(o["Material"], mp.materials[m].name);
+    EXPECT_EQ(o["YoungsModulus"].get<double>(), mp.materials[m].young_modulus);
+    EXPECT_EQ(o["PoissonsRatio"].get<double>(), mp.materials[m].poisson_ratio);
+    std::istringstream ids(o["Patches"].get<std::string>());
+    for (int i; ids >> i;) material_of[static_cast<std::size_t>(i)] = static_cast<int>(m);
+  }
+  for (std::size_t i = 0; i < mp.patches.size(); ++i) EXPECT_EQ(material_of[i], mp.patches[i].material) << "patch " << i;
+
+  ASSERT_EQ(g["displacement"].size(), mp.patches.size());
+  for (std::size_t i = 0; i < mp.patches.size(); ++i) {
+    const Eigen::MatrixXd& u = mp.patches[i].displacement;
+    ASSERT_EQ(g["displacement"][i].size(), static_cast<std::size_t>(u.rows()));
+    for (Eigen::Index r = 0; r < u.rows(); ++r)
+      for (int c = 0; c < 3; ++c) ASSERT_EQ(g["displacement"][i][r][c].get<double>(), u(r, c));  // exact
+  }
   std::filesystem::remove_all(dir);
 }
 

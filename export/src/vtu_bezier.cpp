@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include "igaprep/core/atomic_file.h"
@@ -16,6 +17,7 @@
 #include "igaprep/spline/basis.h"
 #include "igaprep/spline/bezier_extraction.h"
 #include "igaprep/spline/evaluate.h"
+#include "igaprep/spline/scaled_jacobian.h"
 #include "model_checks.h"
 #include "number_text.h"
 
@@ -55,8 +57,26 @@ struct Grid {
   std::vector<double> weights;  // 1 per point
   std::vector<double> displacement, von_mises;
   std::vector<int64_t> connectivity, offsets;
-  std::vector<int32_t> degrees, material, patch;  // degrees: 3 per cell
+  std::vector<int32_t> degrees, material, patch, element;  // degrees, element (i, j, k): 3 per cell
+  std::vector<double> min_scaled_jacobian;                // per cell
+  std::vector<int32_t> point_material, point_patch;       // per point: slices keep them exact
 };
+
+// The smallest scaled Jacobian at the element's (p + 1)^3 equispaced nodes
+// (corners included): a sample, not a bound (igaprep check certifies).
+double element_min_scaled_jacobian(const spline::Patch& p, const std::array<std::array<double, 2>, 3>& domain) {
+  double q = std::numeric_limits<double>::infinity();
+  for (int k = 0; k <= p.degrees[2]; ++k)
+    for (int j = 0; j <= p.degrees[1]; ++j)
+      for (int i = 0; i <= p.degrees[0]; ++i) {
+        const int at[3] = {i, j, k};
+        Eigen::Vector3d xi;
+        for (int d = 0; d < 3; ++d)
+          xi[d] = domain[d][0] + (domain[d][1] - domain[d][0]) * static_cast<double>(at[d]) / p.degrees[d];
+        q = std::min(q, spline::scaled_jacobian(spline::evaluate_jacobian(p, xi)));
+      }
+  return q;
+}
 
 double von_mises(const Eigen::Matrix3d& grad_u, double E, double nu) {
   const Eigen::Matrix3d eps = 0.5 * (grad_u + grad_u.transpose());
@@ -136,6 +156,10 @@ void build_grid(const spline::MultiPatch& model, Grid& g) {
           g.degrees.insert(g.degrees.end(), {deg[0], deg[1], deg[2]});
           g.material.push_back(p.material);
           g.patch.push_back(static_cast<int32_t>(pi));
+          g.element.insert(g.element.end(), {eu, ev, ew});
+          g.min_scaled_jacobian.push_back(element_min_scaled_jacobian(p, be.domain));
+          g.point_material.resize(g.weights.size(), p.material);
+          g.point_patch.resize(g.weights.size(), static_cast<int32_t>(pi));
           if (!solution) continue;
           g.displacement.resize(g.displacement.size() + 3 * nb, 0.0);
           g.von_mises.resize(g.von_mises.size() + nb, 0.0);
@@ -265,6 +289,8 @@ void write_vtu_bezier(const spline::MultiPatch& model, std::ostream& out, const 
   ArrayWriter w(out, options.binary);
   out << "   <PointData RationalWeights=\"RationalWeights\">\n";
   w.array("Float64", "RationalWeights", 1, g.weights, "    ");
+  w.array("Int32", "material", 1, g.point_material, "    ");
+  w.array("Int32", "patch", 1, g.point_patch, "    ");
   if (solution) {
     w.array("Float64", "displacement", 3, g.displacement, "    ");
     w.array("Float64", "von_mises", 1, g.von_mises, "    ");
@@ -274,6 +300,8 @@ void write_vtu_bezier(const spline::MultiPatch& model, std::ostream& out, const 
   w.array("Int32", "HigherOrderDegrees", 3, g.degrees, "    ");
   w.array("Int32", "material", 1, g.material, "    ");
   w.array("Int32", "patch", 1, g.patch, "    ");
+  w.array("Int32", "element", 3, g.element, "    ");
+  w.array("Float64", "min_scaled_jacobian", 1, g.min_scaled_jacobian, "    ");
   out << "   </CellData>\n";
   out << "   <Points>\n";
   w.array("Float64", "Points", 3, g.points, "    ");

@@ -149,7 +149,7 @@ std::string case_json(const Case& c, const std::string& relative_to, bool all_op
   if (all_options) {
     add_stage_options(c, root);
   } else {
-    if (!c.export_formats.empty()) root["export"] = c.export_formats;
+    if (c.export_formats != Case{}.export_formats) root["export"] = c.export_formats;
     if (!check_is_default(c.check)) root["check"] = check_json(c.check);
     if (!validation_is_default(c.validation)) root["validation"] = validation_json(c.validation);
     if (c.reduce) root["reduce"] = reduce_json(*c.reduce);

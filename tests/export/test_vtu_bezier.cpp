@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 
@@ -141,6 +143,26 @@ TEST(VtuBezier, PointOrderMatchesVtk) {
     EXPECT_EQ(static_cast<int>(seen.size()), (o[0] + 1) * (o[1] + 1) * (o[2] + 1));
   }
   EXPECT_EQ(compared, 8 + 24 + 60 + 27);
+}
+
+// Issue 23, item 2: ParaView's Slice coloured by material showed values of
+// +-2e9 (higher-order cell data through VTK's cutter); the same array as
+// point data slices exactly. Every cell also carries its element index and
+// its smallest sampled scaled Jacobian.
+TEST(VtuBezier, ASliceKeepsTheMaterialsAndEveryCellItsQuality) {
+  const std::string dir = scratch_dir("vtu_slice");
+  const MultiPatch mp = make_test_model();
+  igaprep::exporter::write_vtu_bezier(mp, dir + "/m.vtu");
+  const CommandResult r = run_python("slice_vtu.py", {dir + "/m.vtu"});
+  ASSERT_EQ(r.status, 0) << r.output.substr(0, 2000);
+  const nlohmann::json j = nlohmann::json::parse(r.output);
+  EXPECT_GT(j["points"].get<int>(), 0);
+  EXPECT_EQ(j["materials"], nlohmann::json({0.0, 1.0}));  // the plane crosses both, nothing between
+  const std::size_t cells = expected_cells(mp).size();
+  EXPECT_EQ(j["element_shape"], nlohmann::json({cells, 3}));
+  EXPECT_GT(j["min_scaled_jacobian"][0].get<double>(), 0.0);
+  EXPECT_LE(j["min_scaled_jacobian"][1].get<double>(), 1.0 + 1e-12);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -10,7 +10,13 @@
 //  - point data "RationalWeights" (named in <PointData RationalWeights=...>),
 //    1 for B-spline patches;
 //  - cell data "HigherOrderDegrees" (3 components, named in <CellData
-//    HigherOrderDegrees=...>), "material" and "patch" (Int32);
+//    HigherOrderDegrees=...>), "material" and "patch" (Int32), "element"
+//    (Int32, the element's index per direction in its patch) and
+//    "min_scaled_jacobian" (the smallest at the element's (p + 1)^3
+//    equispaced nodes: a sample for looking, `igaprep check` certifies);
+//  - point data "material" and "patch" too: VTK's cutter interpolates
+//    higher-order cell data into nonsense (values of +-2e9 on a slice),
+//    point data constant over each cell slices exactly;
 //  - when the patches carry a displacement: point data "displacement", the
 //    displacement's Bernstein coefficients on the element (exact: the same
 //    rational Bernstein basis as the geometry), and "von_mises", the von Mises

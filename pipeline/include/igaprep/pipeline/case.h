@@ -96,7 +96,9 @@ struct Case {
   param::VolumeParamOptions volume;     // section "decomposition" (docs/decomposition.md)
   spline::BlockFitOptions fit;          // section "fit"
   spline::JacobianOptimizationOptions jacobian;  // section "fit", keys jacobian_*
-  std::vector<std::string> export_formats;  // section "export": besides model.h5, in order
+  // Section "export": besides model.h5, in order. Default: model.vtu, so
+  // that a first run has something to open in ParaView; [] writes none.
+  std::vector<std::string> export_formats{"vtu"};
   iga_check::CheckOptions check;            // section "check": fidelity_limit, volume_limit (percent in the file)
   CaseValidation validation;                // section "validation"
   std::optional<ReduceSettings> reduce;     // section "reduce": data reduction after the fit

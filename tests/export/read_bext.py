@@ -1,9 +1,10 @@
 """Independent reader of the BEXT 2.0 ASCII layout igaprep writes.
 
 Usage: read_bext.py FILE.bext
-Parses nodes, element blocks, elements and dense coefficient blocks, and
+Parses nodes, element blocks, elements and dense coefficient blocks (the
+elements refer to coefficient vectors by id, so vectors may be shared), and
 reconstructs every element's Bernstein control points as C^T times its
-global nodes in homogeneous coordinates. Prints JSON: {"nodes": N,
+global nodes in homogeneous coordinates. Prints JSON: {"nodes": N, "vectors": NUMCV,
 "elements": [{"patch", "element": [eu, ev, ew], "degrees", "points":
 [[x, y, z]...], "weights": [...]}]}.
 """
@@ -77,7 +78,7 @@ def main():
         B = C.T @ hom
         out.append({"patch": e["patch"], "element": e["element"], "degrees": e["degrees"],
                     "points": (B[:, :3] / B[:, 3:4]).tolist(), "weights": B[:, 3].tolist()})
-    print(json.dumps({"nodes": numnod, "elements": out}))
+    print(json.dumps({"nodes": numnod, "vectors": numcv, "elements": out}))
 
 
 if __name__ == "__main__":

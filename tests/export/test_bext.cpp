@@ -2,8 +2,10 @@
 // the file (C^T times the global nodes) and gets our Bezier extraction back.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <map>
 #include <set>
 
 #include "igaprep/export/bext.h"
@@ -46,6 +48,38 @@ TEST(Bext, ReaderRebuildsOurBernsteinPoints) {
     }
   }
   EXPECT_EQ(static_cast<int>(seen.size()), total) << "every element exactly once";
+  // Issue 23, item 1: each distinct coefficient vector once (per block of
+  // patches with the same degrees), not one per element and function.
+  // Vectors equal to round-off are merged: between the exact count and the
+  // count of vectors distinct beyond 1e-10.
+  std::map<std::array<int, 3>, std::set<std::vector<double>>> distinct;
+  std::map<std::array<int, 3>, std::set<std::vector<long long>>> distinct_beyond;
+  long long per_element = 0;
+  for (const auto& p : mp.patches) {
+    const auto ex = igaprep::spline::bezier_extraction(p);
+    for (int ew = 0; ew < ex.element_count(2); ++ew)
+      for (int ev = 0; ev < ex.element_count(1); ++ev)
+        for (int eu = 0; eu < ex.element_count(0); ++eu) {
+          const Eigen::MatrixXd C = igaprep::spline::element_extraction_operator(ex, eu, ev, ew);
+          for (Eigen::Index r = 0; r < C.rows(); ++r) {
+            std::vector<double> row;
+            std::vector<long long> coarse;
+            for (Eigen::Index c = 0; c < C.cols(); ++c) {
+              row.push_back(C(r, c));
+              coarse.push_back(std::llround(C(r, c) * 1e10));
+            }
+            distinct[p.degrees].insert(row);
+            distinct_beyond[p.degrees].insert(coarse);
+            ++per_element;
+          }
+        }
+  }
+  long long exact = 0, beyond = 0;
+  for (const auto& [degrees, rows] : distinct) exact += static_cast<long long>(rows.size());
+  for (const auto& [degrees, rows] : distinct_beyond) beyond += static_cast<long long>(rows.size());
+  EXPECT_LE(j["vectors"].get<long long>(), exact);
+  EXPECT_GE(j["vectors"].get<long long>(), beyond);
+  EXPECT_LT(2 * exact, per_element);
   EXPECT_LT(worst, 1e-13);
   EXPECT_LT(worst_w, 1e-13);
   std::filesystem::remove_all(dir);

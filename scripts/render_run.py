@@ -7,8 +7,10 @@ Usage (Debian: python3-vtk9 and xvfb, both installed by scripts/setup.sh):
 OUTPUT_DIR is a run's output written with `--keep-intermediate` and the
 case's export "vtu" (model.vtu). Writes PREFIX_sides.png (T1 coloured by
 cut region, with the cut loops), PREFIX_midsurface.png (M0trim coloured by
-u), PREFIX_patches.png (the model coloured by patch, T1 translucent) and,
-for a model of more than one material, PREFIX_materials.png, each from
+u), PREFIX_patches.png (the model coloured by patch, T1 translucent),
+PREFIX_quality.png (its surface coloured by each element's smallest sampled
+scaled Jacobian, with a colour bar) and, for a model of more than one
+material, PREFIX_materials.png, each from
 above and from an oblique view, or from the directions VIEWS gives
 ("x,y,z;x,y,z;...", the camera's direction from the model's centre).
 """
@@ -55,11 +57,23 @@ def actor(data, array=None, colour=(0.75, 0.75, 0.75), opacity=1.0, line_width=1
 DEFAULT_VIEWS = ((0, 0, 1), (1, -1, 0.6))
 
 
-def render(actors, path, views=DEFAULT_VIEWS):
+def colour_bar(a, title):
+    bar = vtk.vtkScalarBarActor()
+    bar.SetLookupTable(a.GetMapper().GetLookupTable())
+    bar.SetTitle(title)
+    bar.SetNumberOfLabels(5)
+    for text in (bar.GetTitleTextProperty(), bar.GetLabelTextProperty()):
+        text.SetColor(0, 0, 0)
+    return bar
+
+
+def render(actors, path, views=DEFAULT_VIEWS, overlays=()):
     renderer = vtk.vtkRenderer()
     renderer.SetBackground(1, 1, 1)
     for a in actors:
         renderer.AddActor(a)
+    for o in overlays:
+        renderer.AddActor2D(o)
     window = vtk.vtkRenderWindow()
     window.SetOffScreenRendering(1)
     window.AddRenderer(renderer)
@@ -110,6 +124,9 @@ def main():
         shell = [actor(read(regions), opacity=0.25)] if os.path.exists(regions) else []
         data = read(model)
         render([actor(data, "patch")] + shell, prefix + "_patches.png", views)
+        if data.GetCellData().GetArray("min_scaled_jacobian") is not None:
+            quality = actor(data, "min_scaled_jacobian")
+            render([quality], prefix + "_quality.png", views, [colour_bar(quality, "scaled Jacobian")])
         materials = data.GetCellData().GetArray("material")
         if materials is not None and materials.GetRange()[1] > materials.GetRange()[0]:
             render([actor(data, "material")], prefix + "_materials.png", views)

@@ -16,6 +16,7 @@
 
 #include "igaprep/core/edge_key.h"
 #include "igaprep/core/error.h"
+#include "igaprep/core/text.h"
 #include "igaprep/mesh/principal_axes.h"
 #include "igaprep/core/union_find.h"
 
@@ -287,12 +288,11 @@ CutLoops cut_by_plane(const mesh::TriMesh& T1, const CutPlane& plane, const std:
     const double d = n.dot(T1.V.row(i).transpose() - plane.point);
     s(i) = std::abs(d) < tol ? 0.0 : d;
   }
-  std::ostringstream src;
-  src.precision(6);
-  src << "plane through (" << plane.point.transpose() << ") with normal (" << n.transpose() << ")";
+  const double size = (T1.V.colwise().maxCoeff() - T1.V.colwise().minCoeff()).norm();
+  const std::string src = "plane through " + point_text(plane.point, size) + " with normal " + point_text(n, 1.0);
   if (s.maxCoeff() <= 0.0 || s.minCoeff() >= 0.0)
-    throw bad_input(name + ": the " + src.str() + " does not cut the surface into two sides; " + kAdvice);
-  return insert_zero_set(T1, s, name, src.str());
+    throw bad_input(name + ": the " + src + " does not cut the surface into two sides; " + kAdvice);
+  return insert_zero_set(T1, s, name, src);
 }
 
 CutLoops cut_by_field(const mesh::TriMesh& T1, const Eigen::VectorXd& field, const std::string& name,

@@ -1,6 +1,7 @@
 #pragma once
 // printf-style formatting into a string (summary lines and messages).
 #include <Eigen/Core>
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <string>
@@ -22,6 +23,15 @@ __attribute__((format(printf, 1, 2))) inline std::string text(const char* format
 
 // A point for messages: "(x y z)", 4 significant digits each.
 inline std::string point_text(const Eigen::Vector3d& x) { return text("(%.4g %.4g %.4g)", x[0], x[1], x[2]); }
+
+// The same with the round-off of a computed point shown as 0: components
+// below 1e-9 of `scale` (the model's size, 1 for a unit vector).
+inline std::string point_text(const Eigen::Vector3d& x, double scale) {
+  Eigen::Vector3d y = x;
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(y[k]) < 1e-9 * scale) y[k] = 0.0;  // -0 too
+  return point_text(y);
+}
 
 // The first byte of `s` that is not well-formed UTF-8 text (a bad or overlong
 // sequence, a surrogate, or a control character other than tab, newline and

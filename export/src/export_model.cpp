@@ -10,6 +10,7 @@
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/export/mfem_mesh.h"
 #include "igaprep/export/vtu_bezier.h"
+#include "igaprep/export/vtu_boundary.h"
 #include "model_checks.h"
 
 namespace igaprep::exporter {
@@ -65,6 +66,11 @@ std::vector<Format> parse_formats(const std::string& list) {
   return out;
 }
 
+std::vector<std::string> format_paths(const std::string& basename, Format f) {
+  if (f == Format::Vtu) return {basename + ".vtu", basename + "_boundary.vtu"};
+  return {basename + format_extension(f)};
+}
+
 std::vector<std::string> export_model(const spline::MultiPatch& model, const std::string& basename,
                                       const std::vector<Format>& formats) {
   detail::check_model_for_writing(model, "'" + basename + "'");
@@ -74,6 +80,10 @@ std::vector<std::string> export_model(const spline::MultiPatch& model, const std
   for (Format f : formats) {
     targets.push_back(std::make_unique<AtomicPath>(basename + format_extension(f)));
     AtomicPath& t = *targets.back();
+    if (f == Format::Vtu) {
+      targets.push_back(std::make_unique<AtomicPath>(format_paths(basename, f).back()));
+      targets.back()->write([&](std::ostream& out) { write_vtu_boundary(model, out); }, true);
+    }
     switch (f) {
       case Format::Hdf5: write_hdf5_model(model, t); break;
       case Format::Gismo: t.write([&](std::ostream& out) { write_gismo_xml(model, out); }); break;

@@ -20,6 +20,7 @@
 #include "igaprep/spline/scaled_jacobian.h"
 #include "model_checks.h"
 #include "number_text.h"
+#include "vtu_arrays.h"
 
 namespace igaprep::exporter {
 
@@ -220,57 +221,6 @@ void build_grid(const spline::MultiPatch& model, Grid& g) {
   }
 }
 
-// One <DataArray>: ASCII inline, or an entry of the appended raw block.
-// Binary arrays are remembered by address (no copy) and streamed by
-// finish(); they must stay alive until then.
-class ArrayWriter {
- public:
-  ArrayWriter(std::ostream& out, bool binary) : out_(out), binary_(binary) {}
-
-  template <class T>
-  void array(const std::string& type, const std::string& name, int components, const std::vector<T>& v,
-             const std::string& indent) {
-    out_ << indent << "<DataArray type=\"" << type << "\" Name=\"" << name << "\"";
-    if (components > 1) out_ << " NumberOfComponents=\"" << components << "\"";
-    if (binary_) {
-      const uint64_t bytes = v.size() * sizeof(T);
-      out_ << " format=\"appended\" offset=\"" << offset_ << "\"/>\n";
-      blocks_.push_back({reinterpret_cast<const char*>(v.data()), bytes});
-      offset_ += sizeof(uint64_t) + bytes;
-      return;
-    }
-    out_ << " format=\"ascii\">\n";
-    for (size_t i = 0; i < v.size(); ++i) {
-      if constexpr (std::is_floating_point_v<T>) out_ << detail::exact(v[i]);
-      else out_ << static_cast<long long>(v[i]);
-      out_ << ((i + 1) % static_cast<size_t>(components > 1 ? components : 8) == 0 ? "\n" : " ");
-    }
-    out_ << "\n" << indent << "</DataArray>\n";
-  }
-
-  void finish() {
-    if (!binary_) return;
-    out_ << " <AppendedData encoding=\"raw\">\n_";
-    for (const auto& [data, bytes] : blocks_) {
-      out_.write(reinterpret_cast<const char*>(&bytes), sizeof(uint64_t));
-      if (bytes) out_.write(data, static_cast<std::streamsize>(bytes));
-    }
-    out_ << "\n </AppendedData>\n";
-  }
-
- private:
-  std::ostream& out_;
-  bool binary_;
-  uint64_t offset_ = 0;
-  std::vector<std::pair<const char*, uint64_t>> blocks_;
-};
-
-bool little_endian() {
-  const uint16_t x = 1;
-  unsigned char c;
-  std::memcpy(&c, &x, 1);
-  return c == 1;
-}
 }  // namespace
 
 void write_vtu_bezier(const spline::MultiPatch& model, std::ostream& out, const VtuOptions& options) {
@@ -281,12 +231,8 @@ void write_vtu_bezier(const spline::MultiPatch& model, std::ostream& out, const 
   const size_t npts = g.weights.size(), ncells = g.offsets.size();
   std::vector<uint8_t> types(ncells, 79);  // VTK_BEZIER_HEXAHEDRON
 
-  out << "<?xml version=\"1.0\"?>\n";
-  out << "<VTKFile type=\"UnstructuredGrid\" version=\"2.2\" byte_order=\""
-      << (little_endian() ? "LittleEndian" : "BigEndian") << "\" header_type=\"UInt64\">\n";
-  out << " <UnstructuredGrid>\n";
-  out << "  <Piece NumberOfPoints=\"" << npts << "\" NumberOfCells=\"" << ncells << "\">\n";
-  ArrayWriter w(out, options.binary);
+  detail::vtu_header(out, npts, ncells);
+  detail::ArrayWriter w(out, options.binary);
   out << "   <PointData RationalWeights=\"RationalWeights\">\n";
   w.array("Float64", "RationalWeights", 1, g.weights, "    ");
   w.array("Int32", "material", 1, g.point_material, "    ");
@@ -302,19 +248,7 @@ void write_vtu_bezier(const spline::MultiPatch& model, std::ostream& out, const 
   w.array("Int32", "patch", 1, g.patch, "    ");
   w.array("Int32", "element", 3, g.element, "    ");
   w.array("Float64", "min_scaled_jacobian", 1, g.min_scaled_jacobian, "    ");
-  out << "   </CellData>\n";
-  out << "   <Points>\n";
-  w.array("Float64", "Points", 3, g.points, "    ");
-  out << "   </Points>\n";
-  out << "   <Cells>\n";
-  w.array("Int64", "connectivity", 1, g.connectivity, "    ");
-  w.array("Int64", "offsets", 1, g.offsets, "    ");
-  w.array("UInt8", "types", 1, types, "    ");
-  out << "   </Cells>\n";
-  out << "  </Piece>\n";
-  out << " </UnstructuredGrid>\n";
-  w.finish();
-  out << "</VTKFile>\n";
+  detail::vtu_points_cells_and_end(out, w, g.points, g.connectivity, g.offsets, types);
 }
 
 void write_vtu_bezier(const spline::MultiPatch& model, const std::string& path, const VtuOptions& options) {

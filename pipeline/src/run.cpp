@@ -178,8 +178,9 @@ void refuse_replacing_case_files(const Case& c, const std::string& output_dir) {
   for (const char* name : {"model.h5", "report.json", "report.html", "result.h5"})
     outputs.push_back((fs::path(output_dir) / name).string());
   for (const std::string& format : c.export_formats)
-    outputs.push_back((fs::path(output_dir) / ("model" + exporter::format_extension(exporter::parse_formats(format).at(0))))
-                          .string());
+    for (const std::string& path :
+         exporter::format_paths((fs::path(output_dir) / "model").string(), exporter::parse_formats(format).at(0)))
+      outputs.push_back(path);
   refuse_replacing_inputs(inputs, outputs);
 }
 

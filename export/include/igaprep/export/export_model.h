@@ -1,7 +1,8 @@
 #pragma once
 // One call that writes a model in several file formats (the `igaprep export`
 // command): BASENAME.h5 (igaprep HDF5), .xml (G+Smo), .mesh (MFEM NURBS),
-// .vtu (VTK Bezier hexahedra), .bext (LS-DYNA / Coreform BEXT 2.0).
+// .vtu (VTK Bezier hexahedra, and _boundary.vtu: the labelled sides as
+// Bezier quadrilaterals), .bext (LS-DYNA / Coreform BEXT 2.0).
 #include <string>
 #include <vector>
 
@@ -18,8 +19,11 @@ std::vector<Format> parse_formats(const std::string& comma_separated);
 std::string format_name(Format f);       // "hdf5", "gismo", ...
 std::string format_extension(Format f);  // ".h5", ".xml", ".mesh", ".vtu", ".bext"
 
-// Writes BASENAME + extension for each format, each file atomically.
-// Returns the paths written, in order.
+// The files a format writes for BASENAME (vtu: two).
+std::vector<std::string> format_paths(const std::string& basename, Format f);
+
+// Writes format_paths() for each format, all or none (each file atomically,
+// renamed into place together). Returns the paths written, in order.
 std::vector<std::string> export_model(const spline::MultiPatch& model, const std::string& basename,
                                       const std::vector<Format>& formats);
 

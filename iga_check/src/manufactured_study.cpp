@@ -168,9 +168,11 @@ ManufacturedStudy manufactured_study(const spline::MultiPatch& model, const Manu
   const DisplacementField exact = [field](const Eigen::Vector3d& x) { return field.displacement(x); };
   const DisplacementGradientField exact_gradient = [field](const Eigen::Vector3d& x) { return field.gradient(x); };
 
+  Progress levels("manufactured solution, levels solved", 2, options.progress);
   for (int refine : {options.coarse_refine, options.fine_refine}) {
     const auto t0 = std::chrono::steady_clock::now();
     ElasticityOptions eo;
+    eo.progress = options.progress;
     eo.refine = refine;
     eo.extra_quadrature = options.extra_quadrature;
     eo.solver = options.solver;
@@ -193,7 +195,9 @@ ManufacturedStudy manufactured_study(const spline::MultiPatch& model, const Manu
     L.solver = sol.report.solver;
     L.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     study.levels.push_back(L);
+    levels.update(study.levels.size());
   }
+  levels.finish();
   const ManufacturedLevel &c = study.levels[0], &f = study.levels[1];
   study.h_ratio = c.h / f.h;
   const double lh = std::log(study.h_ratio);

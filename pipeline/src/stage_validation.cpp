@@ -69,6 +69,7 @@ iga_check::PipelineValidation validation_stage(const spline::MultiPatch& mp, con
     mo.coarse_refine = options.coarse_refine;
     mo.fine_refine = options.fine_refine;
     mo.solver = linear_solver(options.solver);
+    mo.progress = progress_to(observer);
     try {
       // Also for the whole model: collapsed sides then get the cut label.
       const spline::MultiPatch sub = spline::submodel(mp, v.patch_list, kValidationCutLabel);

@@ -6,6 +6,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <string>
+#include <utility>
 
 #include "igaprep/core/error.h"
 #include "igaprep/iga_check/elasticity_material.h"
@@ -96,8 +99,20 @@ TEST(SolveManufacturedStudy, CurvedTwoPatchDegree3ConvergesAtRatePPlusOne) {
   iga_check::ManufacturedOptions options;
   options.coarse_refine = 1;
   options.fine_refine = 2;
+  // Issue 23, item 6: the study reports progress (each level's assembly,
+  // then the levels solved) instead of running silently.
+  std::map<std::string, std::pair<std::size_t, std::size_t>> last;
+  int reports = 0;
+  options.progress = [&](const std::string& task, std::size_t done, std::size_t total) {
+    last[task] = {done, total};
+    ++reports;
+  };
   const auto st = iga_check::manufactured_study(mp, options);
   ASSERT_EQ(st.levels.size(), 2u);
+  EXPECT_EQ(last["manufactured solution, levels solved"], std::make_pair(std::size_t{2}, std::size_t{2}));
+  ASSERT_EQ(last.count("assembling stiffness"), 1u);
+  EXPECT_EQ(last["assembling stiffness"].first, last["assembling stiffness"].second);
+  EXPECT_GT(reports, 10);
   ASSERT_EQ(st.prescribed_labels, std::vector<std::string>{"T1"});
   EXPECT_NEAR(st.field.length, std::sqrt(4.0 + 4.0 + 1.0), 1e-9);  // control points span [0,2]^2 x [0,1]
   for (const auto& L : st.levels)

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "igaprep/core/progress.h"
 #include "igaprep/iga_check/elasticity_material.h"
 #include "igaprep/iga_check/elasticity_problem.h"
 #include "igaprep/spline/multipatch.h"
@@ -43,6 +44,7 @@ struct ManufacturedOptions {
   int extra_quadrature = 0;  // Gauss points beyond p + 1 in the solves (the error norms use 2 more)
   LinearSolver solver = LinearSolver::Cholesky;
   double amplitude = 1e-3;   // of the field, relative to the bounding-box diagonal
+  ProgressCallback progress;  // each level's assembly, then the levels done
 };
 
 struct ManufacturedLevel {

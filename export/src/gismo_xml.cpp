@@ -14,26 +14,13 @@
 #include "igaprep/spline/curve_surface.h"
 #include "model_checks.h"
 #include "number_text.h"
+#include "xml_text.h"
 
 namespace igaprep::exporter {
 
 namespace {
 using detail::exact;
-
-std::string xml_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+using detail::xml_escape;
 
 // "--" may not appear inside an XML comment.
 std::string comment_safe(const std::string& s) {

@@ -1,5 +1,6 @@
 #include "igaprep/pipeline/run.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -9,6 +10,7 @@
 #include "igaprep/core/output_folder.h"
 #include "igaprep/export/export_model.h"
 #include "igaprep/export/hdf5_model.h"
+#include "igaprep/export/pvd.h"
 #include "igaprep/pipeline/check.h"
 #include "igaprep/pipeline/export.h"
 #include "igaprep/pipeline/midsurface.h"
@@ -100,10 +102,26 @@ std::string verdict_of(const iga_check::CheckReport& report, const iga_check::Pi
   return (p.passed ? "PASS: " : "FAIL: ") + verdict;
 }
 
+// run.pvd: every VTU the run wrote (the model first), to open together in
+// ParaView; none when it wrote no VTU.
+void write_collection(const OutputFolder& folder, std::vector<std::string>& outputs) {
+  std::vector<std::string> files;
+  for (const auto& e : fs::directory_iterator(folder.staging()))
+    if (e.path().extension() == ".vtu") files.push_back(e.path().filename().string());
+  if (files.empty()) return;
+  std::sort(files.begin(), files.end(), [](const std::string& a, const std::string& b) {
+    const bool ma = a.rfind("model", 0) == 0, mb = b.rfind("model", 0) == 0;
+    return ma != mb ? ma : a < b;
+  });
+  exporter::write_pvd((fs::path(folder.staging()) / "run.pvd").string(), files);
+  outputs.push_back("run.pvd");
+}
+
 // The report goes in last; then the run's outputs replace the previous
 // ones at once (OutputFolder).
 void write_report_and_commit(RunResult& r, OutputFolder* folder) {
   if (!folder) return;
+  write_collection(*folder, r.report.pipeline->outputs);
   r.report.pipeline->outputs.push_back("report.json");
   r.report.pipeline->outputs.push_back("report.html");
   iga_check::write_report(r.report, folder->staging());
@@ -175,7 +193,7 @@ void refuse_replacing_case_files(const Case& c, const std::string& output_dir) {
   for (const CaseSurface& s : c.surfaces)
     if (!s.file.empty()) inputs.push_back(s.file);
   std::vector<std::string> outputs;
-  for (const char* name : {"model.h5", "report.json", "report.html", "result.h5"})
+  for (const char* name : {"model.h5", "report.json", "report.html", "result.h5", "run.pvd"})
     outputs.push_back((fs::path(output_dir) / name).string());
   for (const std::string& format : c.export_formats)
     for (const std::string& path :

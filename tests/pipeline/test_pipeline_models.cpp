@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 
 #include <nlohmann/json.hpp>
 
@@ -116,9 +118,19 @@ TEST(PipelineModels, Sphere2MeetsEveryCriterionAndWritesItsOutputs) {
   const MultiPatch result = igaprep::exporter::read_hdf5_model(c.output_dir + "/result.h5");
   EXPECT_EQ(result.strain_energy, r.load_case->strain_energy);
   EXPECT_EQ(result.max_displacement, r.load_case->max_displacement);
-  for (const char* f : {"model.h5", "model.xml", "model.mesh", "model.vtu", "result.h5", "report.json", "report.html"})
+  for (const char* f : {"model.h5", "model.xml", "model.mesh", "model.vtu", "model_boundary.vtu", "result.h5",
+                        "report.json", "report.html", "run.pvd"})
     EXPECT_TRUE(pipeline_test::fs::exists(c.output_dir + "/" + f)) << f;
   EXPECT_FALSE(pipeline_test::fs::exists(c.output_dir + "/model.bext"));  // not asked
+  // run.pvd groups the VTU files for ParaView, the model first (issue 23, item 2).
+  std::ifstream pvd(c.output_dir + "/run.pvd");
+  const std::string collection((std::istreambuf_iterator<char>(pvd)), std::istreambuf_iterator<char>());
+  EXPECT_NE(collection.find("<VTKFile type=\"Collection\""), std::string::npos) << collection;
+  const std::size_t model_at = collection.find("file=\"model.vtu\""),
+                    boundary_at = collection.find("file=\"model_boundary.vtu\"");
+  EXPECT_NE(model_at, std::string::npos) << collection;
+  EXPECT_NE(boundary_at, std::string::npos) << collection;
+  EXPECT_LT(model_at, boundary_at);
   // The model on disk is the model returned, with its provenance.
   const MultiPatch disk = igaprep::exporter::read_hdf5_model(c.output_dir + "/model.h5");
   ASSERT_EQ(disk.patches.size(), r.model.patches.size());

@@ -72,7 +72,7 @@ std::vector<std::string> format_paths(const std::string& basename, Format f) {
 }
 
 std::vector<std::string> export_model(const spline::MultiPatch& model, const std::string& basename,
-                                      const std::vector<Format>& formats) {
+                                      const std::vector<Format>& formats, const VtuOptions& vtu) {
   detail::check_model_for_writing(model, "'" + basename + "'");
   // Every format into its temporary file first, then all renamed into place:
   // a format that fails leaves none of them (and the previous files) behind.
@@ -88,7 +88,7 @@ std::vector<std::string> export_model(const spline::MultiPatch& model, const std
       case Format::Hdf5: write_hdf5_model(model, t); break;
       case Format::Gismo: t.write([&](std::ostream& out) { write_gismo_xml(model, out); }); break;
       case Format::Mfem: t.write([&](std::ostream& out) { write_mfem_mesh(model, out); }); break;
-      case Format::Vtu: t.write([&](std::ostream& out) { write_vtu_bezier(model, out); }, true); break;
+      case Format::Vtu: t.write([&](std::ostream& out) { write_vtu_bezier(model, out, vtu); }, true); break;
       case Format::Bext: t.write([&](std::ostream& out) { write_bext(model, out); }); break;
     }
   }

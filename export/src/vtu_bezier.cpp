@@ -229,6 +229,9 @@ void write_vtu_bezier(const spline::MultiPatch& model, std::ostream& out, const 
   build_grid(model, g);
   const bool solution = !g.von_mises.empty();
   const size_t npts = g.weights.size(), ncells = g.offsets.size();
+  if (!options.certified_lower_bound.empty() && options.certified_lower_bound.size() != ncells)
+    throw bad_input("VTU Bezier: " + std::to_string(options.certified_lower_bound.size()) +
+                    " certified bounds for " + std::to_string(ncells) + " elements");
   std::vector<uint8_t> types(ncells, 79);  // VTK_BEZIER_HEXAHEDRON
 
   detail::vtu_header(out, npts, ncells);
@@ -248,6 +251,8 @@ void write_vtu_bezier(const spline::MultiPatch& model, std::ostream& out, const 
   w.array("Int32", "patch", 1, g.patch, "    ");
   w.array("Int32", "element", 3, g.element, "    ");
   w.array("Float64", "min_scaled_jacobian", 1, g.min_scaled_jacobian, "    ");
+  if (!options.certified_lower_bound.empty())
+    w.array("Float64", "certified_det_lower_bound", 1, options.certified_lower_bound, "    ");
   detail::vtu_points_cells_and_end(out, w, g.points, g.connectivity, g.offsets, types);
 }
 

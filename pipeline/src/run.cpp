@@ -236,7 +236,7 @@ void run_stages(const Case& c, Observer& outer, OutputFolder* folder, RunResult&
   iga_check::PipelineSection& p = *r.report.pipeline;
   r.model = std::move(fit.model);
   if (folder)
-    for (const auto& f : export_stage(r.model, c.export_formats, folder->staging(), observer).written)
+    for (const auto& f : export_stage(r.model, c.export_formats, folder->staging(), r.report.certificates, observer).written)
       p.outputs.push_back(fs::path(f).filename().string());
   if (c.validation.enabled) p.validation = validation_stage(r.model, r.report, c.validation, observer);
   if (c.load_case) run_load_case(c, observer, folder, r, stages);

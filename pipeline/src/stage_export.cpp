@@ -8,7 +8,7 @@
 namespace igaprep::pipeline {
 
 Exported export_stage(const spline::MultiPatch& model, const std::vector<std::string>& formats, const std::string& dir,
-                      Observer& observer) {
+                      const std::vector<iga_check::ElementCertificate>& certificates, Observer& observer) {
   StageTimer timer;
   std::vector<exporter::Format> list;
   for (const std::string& name : formats)
@@ -19,8 +19,10 @@ Exported export_stage(const spline::MultiPatch& model, const std::vector<std::st
   const std::string base = (std::filesystem::path(dir) / "model").string();
   exporter::write_hdf5_model(model, base + ".h5");
   r.written.push_back(base + ".h5");
+  exporter::VtuOptions vtu;
+  for (const iga_check::ElementCertificate& c : certificates) vtu.certified_lower_bound.push_back(c.lower_bound);
   if (!list.empty())
-    for (const std::string& path : exporter::export_model(model, base, list)) r.written.push_back(path);
+    for (const std::string& path : exporter::export_model(model, base, list, vtu)) r.written.push_back(path);
   r.seconds = timer.seconds();
   std::string names;
   for (std::size_t i = 0; i < r.written.size(); ++i)

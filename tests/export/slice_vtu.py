@@ -5,7 +5,8 @@ Cuts the Bezier cells with the plane through the bounding box's centre,
 normal (1, 1, 1) (through several patches and both materials), and prints
 JSON: the slice's point count, the distinct values of the point data
 "material" on it, and the range of the cell data "min_scaled_jacobian" and
-the shape of "element" in the file (issue 23: higher-order cell data came
+the shape of "element" in the file, and the cell data
+"certified_det_lower_bound" when present (issue 23: higher-order cell data came
 through the cutter as values of +-2e9).
 """
 import json
@@ -33,7 +34,9 @@ def main():
     material = vtk_to_numpy(cut.GetPointData().GetArray("material"))
     q = vtk_to_numpy(grid.GetCellData().GetArray("min_scaled_jacobian"))
     element = vtk_to_numpy(grid.GetCellData().GetArray("element"))
-    print(json.dumps({"points": cut.GetNumberOfPoints(),
+    bound = grid.GetCellData().GetArray("certified_det_lower_bound")
+    bound = vtk_to_numpy(bound).tolist() if bound is not None else None
+    print(json.dumps({"points": cut.GetNumberOfPoints(), "certified_det_lower_bound": bound,
                       "materials": sorted(float(v) for v in np.unique(material)),
                       "min_scaled_jacobian": [float(q.min()), float(q.max())],
                       "element_shape": list(element.shape), "element_max": int(element.max())}))

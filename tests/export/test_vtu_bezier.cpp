@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "igaprep/core/error.h"
 #include "igaprep/export/vtu_bezier.h"
 #include "igaprep/spline/bezier_extraction.h"
 #include "igaprep/spline/evaluate.h"
@@ -152,7 +153,9 @@ TEST(VtuBezier, PointOrderMatchesVtk) {
 TEST(VtuBezier, ASliceKeepsTheMaterialsAndEveryCellItsQuality) {
   const std::string dir = scratch_dir("vtu_slice");
   const MultiPatch mp = make_test_model();
-  igaprep::exporter::write_vtu_bezier(mp, dir + "/m.vtu");
+  igaprep::exporter::VtuOptions options;
+  for (std::size_t c = 0; c < expected_cells(mp).size(); ++c) options.certified_lower_bound.push_back(0.25 * c);
+  igaprep::exporter::write_vtu_bezier(mp, dir + "/m.vtu", options);
   const CommandResult r = run_python("slice_vtu.py", {dir + "/m.vtu"});
   ASSERT_EQ(r.status, 0) << r.output.substr(0, 2000);
   const nlohmann::json j = nlohmann::json::parse(r.output);
@@ -162,6 +165,9 @@ TEST(VtuBezier, ASliceKeepsTheMaterialsAndEveryCellItsQuality) {
   EXPECT_EQ(j["element_shape"], nlohmann::json({cells, 3}));
   EXPECT_GT(j["min_scaled_jacobian"][0].get<double>(), 0.0);
   EXPECT_LE(j["min_scaled_jacobian"][1].get<double>(), 1.0 + 1e-12);
+  EXPECT_EQ(j["certified_det_lower_bound"].get<std::vector<double>>(), options.certified_lower_bound);
+  options.certified_lower_bound.pop_back();  // one per cell or none
+  EXPECT_THROW(igaprep::exporter::write_vtu_bezier(mp, dir + "/m2.vtu", options), igaprep::Error);
   std::filesystem::remove_all(dir);
 }
 

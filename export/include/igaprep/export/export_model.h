@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "igaprep/export/vtu_bezier.h"
 #include "igaprep/spline/multipatch.h"
 
 namespace igaprep::exporter {
@@ -24,7 +25,8 @@ std::vector<std::string> format_paths(const std::string& basename, Format f);
 
 // Writes format_paths() for each format, all or none (each file atomically,
 // renamed into place together). Returns the paths written, in order.
+// vtu: options for BASENAME.vtu (e.g. the elements' certified bounds).
 std::vector<std::string> export_model(const spline::MultiPatch& model, const std::string& basename,
-                                      const std::vector<Format>& formats);
+                                      const std::vector<Format>& formats, const VtuOptions& vtu = {});
 
 }  // namespace igaprep::exporter

@@ -27,6 +27,7 @@
 #include <array>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "igaprep/spline/multipatch.h"
 
@@ -34,6 +35,11 @@ namespace igaprep::exporter {
 
 struct VtuOptions {
   bool binary = true;  // appended raw binary data; false: ASCII (readable, larger)
+  // Per cell in the writer's order (patches in turn, each element w, v, u
+  // with u fastest, as iga_check::certify_model lists them): the certified
+  // lower bound of det J, written as cell data "certified_det_lower_bound";
+  // empty: not written.
+  std::vector<double> certified_lower_bound;
 };
 
 // Inputs: model (every degree >= 1). Output: the VTU text on `out`.

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "igaprep/iga_check/jacobian_certificate.h"
 #include "igaprep/pipeline/observer.h"
 #include "igaprep/spline/multipatch.h"
 
@@ -16,8 +17,10 @@ struct Exported {
 };
 
 // Inputs: the model, format names (case key "export"; "hdf5" adds nothing:
-// model.h5 is always written), the output folder (created if needed).
+// model.h5 is always written), the output folder (created if needed), and
+// the check's element certificates of this model (for model.vtu; may be
+// empty).
 Exported export_stage(const spline::MultiPatch& model, const std::vector<std::string>& formats, const std::string& dir,
-                      Observer& observer);
+                      const std::vector<iga_check::ElementCertificate>& certificates, Observer& observer);
 
 }  // namespace igaprep::pipeline

@@ -74,7 +74,8 @@ Decomposition decompose_stage(const Case& c, const Surfaces& surfaces, const par
   d.layout = param::base_layout(base.m, c.base.max_aspect);
   d.diagonal = (d.H.tets.V.colwise().maxCoeff() - d.H.tets.V.colwise().minCoeff()).norm();
   StageSummary s{"decompose", timer.seconds(),
-                 text("H: %lld vertices, %lld tets; w: %zu interior extrema (%d values flattened); M: %zu rectangles, %zu boundary segments",
+                 text("tet mesh with M inside (H): %lld vertices, %lld tets; field w (0 on the surface, 1 on M): %zu interior extrema "
+                      "(%d values flattened); M's layout: %zu rectangles, %zu boundary segments",
                       static_cast<long long>(d.H.tets.V.rows()), static_cast<long long>(d.H.tets.T.rows()),
                       d.w.extrema.size(), d.w.flattened, d.layout.rectangles.size(), d.layout.crests.size()),
                  {}};
@@ -93,7 +94,7 @@ param::VolumeParam param_stage(const Case& c, const Surfaces& surfaces, const De
   options.progress = progress_to(observer);
   param::VolumeParam vp = param::build_volume_param(d.H, d.w, d.layout, spline::block_sample_params(c.fit), options);
   StageSummary s{"param", timer.seconds(),
-                 text("strategy %d, w0 = %.3f: %zu blocks (%d core faces x %d layers + core), %d streamlines "
+                 text("strategy %d, core inside w = %.3f (w0): %zu blocks (%d core faces x %d layers + core), %d streamlines "
                       "(%d faces spread), %d folded sample cells",
                       c.volume.strategy, vp.w0, vp.blocks.size(), vp.core_faces, vp.layers, vp.streamlines,
                       vp.spread_faces, vp.folded_cells),

@@ -89,9 +89,9 @@ std::vector<std::string> midsurface_lines(const param::MidsurfaceResult& r) {
   if (r.valid.size() > 1) out.push_back("kept the candidate with the lowest score (" + r.cut.source + ")");
   for (std::size_t l = 0; l < r.cut.loops.size(); ++l)
     out.push_back(text("loop %zu: %zu vertices", l, r.cut.loops[l].size()));
-  out.push_back(text("M0: %ld triangles; M0trim: %ld triangles", static_cast<long>(r.m0.mesh.F.rows()),
+  out.push_back(text("midsurface (M0): %ld triangles; trimmed (M0trim): %ld triangles", static_cast<long>(r.m0.mesh.F.rows()),
                      static_cast<long>(r.m0trim.mesh.F.rows())));
-  out.push_back(text("path lengths to M0: %d of %d traced, mean %.6g, variance %.6g (min %.6g, max %.6g)",
+  out.push_back(text("path lengths from the surface to the midsurface: %d of %d traced, mean %.6g, variance %.6g (min %.6g, max %.6g)",
                      r.paths.reached, r.paths.traced, r.paths.mean, r.paths.variance, r.paths.min, r.paths.max));
   const auto& pc = r.polycube;
   out.push_back(text("domain %.6g x %.6g with %zu holes, (u, v) weights: %s", pc.domain.width, pc.domain.height,
@@ -145,7 +145,7 @@ param::BaseSurface base_stage(const Case& c, const param::MidsurfaceResult& mid,
   StageTimer timer;
   param::BaseSurface b = param::base_surface(mid.m0trim.mesh, mid.polycube, c.base);
   StageSummary s{"base", timer.seconds(),
-                 text("M: %ld triangles, M0trim inset by %.4g in its (u, v) domain, cut along %s",
+                 text("base surface (M): %ld triangles, the trimmed midsurface inset by %.4g in its (u, v) domain, cut along %s",
                       static_cast<long>(b.m.mesh.F.rows()), b.m.inset, uv_note(c.base, b).c_str()),
                  {}};
   if (b.m.smoothing < c.base.smoothing)

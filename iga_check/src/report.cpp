@@ -5,11 +5,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <utility>
 
 #include "igaprep/core/atomic_file.h"
 #include "igaprep/core/error.h"
+#include "igaprep/core/text.h"
 
 namespace igaprep::iga_check {
 
@@ -171,6 +174,55 @@ std::string criteria_html(const std::vector<Criterion>& criteria) {
   return h.str();
 }
 
+// A run's figure in words for report.html (report.json keeps the key, shown
+// as the cell's tooltip; docs/check-report.md describes both).
+std::string seconds_text(double s) { return text(s < 10.0 ? "%.2f" : "%.1f", s); }
+
+std::string figure_label(const std::string& key) {
+  static const std::map<std::string, std::string> words = {
+      {"surfaces", "input surfaces"},
+      {"materials", "materials"},
+      {"tets", "tets of the tet mesh of the cut surfaces"},
+      {"patches", "patches"},
+      {"degree", "degree (patch 0, direction u)"},
+      {"elements_per_direction", "elements per direction (patch 0, direction u)"},
+      {"elements", "Bezier elements"},
+      {"control_points", "control points, summed over patches"},
+      {"interfaces", "interfaces"},
+      {"boundary_sides", "labelled boundary sides"},
+      {"unmatched_sides", "sides neither on an interface nor labelled"},
+      {"stitched_control_points", "control points made identical where patches meet"},
+      {"max_stitch", "largest move that made them identical"},
+      {"fit_min_scaled_jacobian", "lowest sampled scaled Jacobian of the fit, before the repair"},
+      {"optimized_min_scaled_jacobian", "lowest sampled scaled Jacobian after the repair"},
+      {"optimized_control_points", "control points the repair moved"},
+      {"reduce_tolerance_asked", "data reduction: tolerance asked"},
+      {"reduce_tolerance", "data reduction: tolerance used"},
+      {"reduce_bound", "data reduction: no point moved farther than"},
+      {"reduce_measured_deviation", "data reduction: largest deviation measured"},
+      {"reduce_control_points_before", "data reduction: control points before"},
+      {"reduce_elements_before", "data reduction: elements before"},
+      {"reduce_uncertified_elements_before", "data reduction: elements not certified before"},
+      {"reduce_knots_removed", "data reduction: knots removed"},
+      {"reduce_removals_undone", "data reduction: removals undone to keep certificates"},
+      {"positive_elements", "elements certified positive"},
+      {"negative_elements", "elements with a negative Jacobian"},
+      {"degenerate_elements", "degenerate elements"},
+      {"undecided_elements", "undecided elements"},
+      {"min_scaled_jacobian", "smallest scaled Jacobian"},
+      {"interface_gap_relative", "largest gap at an interface, relative to the diagonal"},
+      {"load_case_unknowns", "load case: unknowns"},
+      {"load_case_strain_energy", "load case: strain energy"},
+      {"load_case_max_displacement", "load case: largest displacement"}};
+  if (const auto it = words.find(key); it != words.end()) return it->second;
+  for (const auto& [prefix, text] : {std::pair<std::string, std::string>{"fidelity_relative_", "fidelity, surface "},
+                                     {"volume_difference_region_", "volume difference, region "}})
+    if (key.rfind(prefix, 0) == 0) return text + key.substr(prefix.size()) + " (relative)";
+  std::string out = key;
+  std::replace(out.begin(), out.end(), '_', ' ');
+  return out;
+}
+
 // The run's section of report.html: verdict, stage times, figures, validation.
 std::string pipeline_html(const PipelineSection& p) {
   std::ostringstream h;
@@ -180,13 +232,14 @@ std::string pipeline_html(const PipelineSection& p) {
   h << "<table>\n<tr><th>stage</th><th>seconds</th></tr>\n";
   double total = 0.0;
   for (const auto& s : p.stages) {
-    h << "<tr><td>" << esc(s.name) << "</td><td>" << fmt(s.seconds) << "</td></tr>\n";
+    h << "<tr><td>" << esc(s.name) << "</td><td>" << seconds_text(s.seconds) << "</td></tr>\n";
     total += s.seconds;
   }
-  h << "<tr><th>total</th><th>" << fmt(total) << "</th></tr>\n</table>\n";
+  h << "<tr><th>total</th><th>" << seconds_text(total) << "</th></tr>\n</table>\n";
   h << "<table>\n<tr><th>figure</th><th>value</th></tr>\n";
   for (const auto& [name, value] : p.figures)
-    h << "<tr><td>" << esc(name) << "</td><td>" << fmt(value) << "</td></tr>\n";
+    h << "<tr><td title=\"" << esc(name) << "\">" << esc(figure_label(name)) << "</td><td>" << fmt(value)
+      << "</td></tr>\n";
   h << "</table>\n";
   if (p.validation) {
     const PipelineValidation& v = *p.validation;
@@ -208,8 +261,8 @@ std::string pipeline_html(const PipelineSection& p) {
     }
   }
   if (!p.outputs.empty()) {
-    h << "<p>Files written:";
-    for (const auto& o : p.outputs) h << " <code>" << esc(o) << "</code>";
+    h << "<p>Files written (beside this report):";
+    for (const auto& o : p.outputs) h << " <a href=\"" << esc(o) << "\"><code>" << esc(o) << "</code></a>";
     h << "</p>\n";
   }
   return h.str();

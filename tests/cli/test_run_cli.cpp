@@ -147,6 +147,11 @@ TEST(RunCli, Sphere2EndToEnd) {
   const std::string html = read_all(out + "/report.html");
   EXPECT_NE(html.find("id=\"pipeline\""), std::string::npos);
   EXPECT_EQ(html.find("<script"), std::string::npos);
+  // Issue 23, item 3: the run's figures in words (the key as tooltip only),
+  // and the files written as links beside the report.
+  EXPECT_NE(html.find(">smallest scaled Jacobian<"), std::string::npos);
+  EXPECT_EQ(html.find(">max_stitch<"), std::string::npos);
+  EXPECT_NE(html.find("<a href=\"model.h5\">"), std::string::npos);
   // result.h5's root attributes equal the report's figures.
   double energy = 0, umax = 0;
   ASSERT_TRUE(python_two_numbers("import h5py; f = h5py.File('" + out + "/result.h5', 'r'); "

@@ -13,6 +13,7 @@
 #include "igaprep/core/atomic_file.h"
 #include "igaprep/core/error.h"
 #include "igaprep/core/text.h"
+#include "igaprep/iga_check/model_picture.h"
 
 namespace igaprep::iga_check {
 
@@ -374,6 +375,13 @@ CheckReport build_check_report(const spline::MultiPatch& mp, const std::vector<m
                 fidelity_criterion(r.fidelity, surfaces, r.surface_labels, r.input_diagonal, options.fidelity_limit),
                 volume_criterion(r.topology, r.surface_labels, std::max(1, static_cast<int>(mp.materials.size())),
                                  options.volume_limit)};
+  std::vector<double> patch_min;
+  std::vector<bool> patch_failed;
+  for (std::size_t p = 0; p < r.patches.size() && p < r.quality.patches.size(); ++p) {
+    patch_min.push_back(r.quality.patches[p].scaled_jacobian.min);
+    patch_failed.push_back(!r.patches[p].passed);
+  }
+  r.picture_svg = model_picture_svg(mp, patch_min, patch_failed);
   r.passed = std::all_of(r.criteria.begin(), r.criteria.end(), [](const Criterion& c) { return c.passed; });
   for (const Criterion& c : r.criteria)
     if (!c.checked) r.warnings.push_back(c.name + " " + c.summary);
@@ -523,6 +531,11 @@ std::string report_html(const CheckReport& r) {
     << fmt(r.diagonal) << "</p>\n";
   h << "<p id=\"verdict\" class=\"" << (r.passed ? "pass" : "fail") << "\">" << esc(r.verdict) << "</p>\n";
   h << criteria_html(r.criteria);
+  if (!r.picture_svg.empty())
+    h << "<h2>Model</h2>\n<figure>\n" << r.picture_svg
+      << "<figcaption>The labelled boundary, one face per element, coloured by its patch's smallest sampled scaled "
+         "Jacobian (red 0 or less, yellow 0.5, blue 1); patches that fail are outlined in red. To look closer, open "
+         "model.vtu in ParaView.</figcaption>\n</figure>\n";
   if (r.pipeline) h << pipeline_html(*r.pipeline);
   h << "<h2>Patches</h2>\n<table>\n<tr><th>patch</th><th>material</th><th>elements</th><th>positive</th>"
        "<th>negative</th><th>degenerate</th><th>undecided</th><th>certified min det J &ge;</th><th>min det J "

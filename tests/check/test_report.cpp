@@ -11,6 +11,7 @@
 
 #include "check/check_models.h"
 #include "igaprep/iga_check/report.h"
+#include "igaprep/spline/bezier_extraction.h"
 #include "igaprep/spline/refine.h"
 
 using namespace igaprep;
@@ -101,7 +102,23 @@ TEST(CheckReport, SphereShellReportFilesAndDocumentedKeys) {
   EXPECT_EQ(html.find("url("), std::string::npos);
   size_t svgs = 0;
   for (size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) ++svgs;
-  EXPECT_EQ(svgs, 2u);
+  EXPECT_EQ(svgs, 3u);  // the model's picture and two histograms
+  // Issue 23, item 3: the model drawn in the report, one polygon per element
+  // face on a labelled side.
+  EXPECT_NE(html.find("<svg id=\"model-picture\""), std::string::npos);
+  std::size_t faces = 0;
+  for (const auto& b : mp.boundaries) {
+    const auto& p = mp.patches[static_cast<std::size_t>(b.patch)];
+    const int n = b.side.direction();
+    std::size_t count = 1;
+    for (int d = 0; d < 3; ++d)
+      if (d != n) count *= static_cast<std::size_t>(igaprep::spline::bezier_extraction(p).element_count(d));
+    faces += count;
+  }
+  std::size_t polygons = 0;
+  for (size_t at = html.find("<polygon"); at != std::string::npos; at = html.find("<polygon", at + 1)) ++polygons;
+  EXPECT_EQ(polygons, faces);
+  EXPECT_GT(faces, 0u);
   EXPECT_NE(html.find("scaled Jacobian"), std::string::npos);
   EXPECT_NE(html.find(r.verdict), std::string::npos);
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator{}), 2);

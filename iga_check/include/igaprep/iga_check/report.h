@@ -86,6 +86,7 @@ struct CheckReport {
   std::vector<std::string> surface_labels;  // input surfaces, outermost first (may be empty)
   std::vector<std::string> material_names;
   std::vector<ElementCertificate> certificates;  // every element of every patch
+  std::string picture_svg;  // the model's labelled boundary for report.html (model_picture.h); may be empty
   std::vector<PatchSummary> patches;
   std::vector<ElementCertificate> worst_elements;
   QualityReport quality;

@@ -130,7 +130,9 @@ std::string esc(const std::string& s) {
   return o;
 }
 
-// A histogram as an inline SVG bar chart.
+// A histogram as an inline SVG bar chart, bar heights on a log scale (a
+// tail of a few samples beside millions stays visible), with the check's
+// threshold, 0, marked where it lies inside the range.
 std::string svg_histogram(const Histogram& h, const std::string& title) {
   const int W = 520, H = 220, left = 50, right = 10, top = 28, bottom = 36;
   const int n = static_cast<int>(h.counts.size());
@@ -144,17 +146,24 @@ std::string svg_histogram(const Histogram& h, const std::string& title) {
   s << "<line x1=\"" << left << "\" y1=\"" << top + ph << "\" x2=\"" << left + pw << "\" y2=\"" << top + ph
     << "\" stroke=\"#444\"/>\n";
   for (int b = 0; b < n; ++b) {
-    const double bh = ph * h.counts[b] / peak;
+    const double bh = ph * std::log1p(static_cast<double>(h.counts[b])) / std::log1p(static_cast<double>(peak));
     const double x = left + pw * b / n;
     s << "<rect x=\"" << fmt(x + 1) << "\" y=\"" << fmt(top + ph - bh) << "\" width=\"" << fmt(pw / n - 2)
       << "\" height=\"" << fmt(bh) << "\" fill=\"#3b7dd8\"><title>[" << fmt(h.lo + (h.hi - h.lo) * b / n) << ", "
       << fmt(h.lo + (h.hi - h.lo) * (b + 1) / n) << "): " << h.counts[b] << "</title></rect>\n";
+  }
+  if (h.lo < 0.0 && h.hi > 0.0) {
+    const double x0 = left + pw * (0.0 - h.lo) / (h.hi - h.lo);
+    s << "<line class=\"threshold\" x1=\"" << fmt(x0) << "\" y1=\"" << top << "\" x2=\"" << fmt(x0) << "\" y2=\""
+      << top + ph << "\" stroke=\"#c62828\" stroke-dasharray=\"4 3\"><title>0: below it an element folds</title></line>\n";
+    s << "<text x=\"" << fmt(x0) << "\" y=\"" << H - 12 << "\" text-anchor=\"middle\" class=\"a\">0</text>\n";
   }
   s << "<text x=\"" << left << "\" y=\"" << H - 12 << "\" class=\"a\">" << fmt(h.lo) << "</text>\n";
   s << "<text x=\"" << left + pw << "\" y=\"" << H - 12 << "\" text-anchor=\"end\" class=\"a\">" << fmt(h.hi)
     << "</text>\n";
   s << "<text x=\"" << left - 4 << "\" y=\"" << top + 10 << "\" text-anchor=\"end\" class=\"a\">" << peak
     << "</text>\n";
+  s << "<text x=\"" << left + pw << "\" y=\"" << top - 2 << "\" text-anchor=\"end\" class=\"a\">samples, log scale</text>\n";
   s << "<text x=\"" << left - 4 << "\" y=\"" << top + ph << "\" text-anchor=\"end\" class=\"a\">0</text>\n";
   s << "</svg>\n";
   return s.str();

@@ -120,6 +120,10 @@ TEST(CheckReport, SphereShellReportFilesAndDocumentedKeys) {
   EXPECT_EQ(polygons, faces);
   EXPECT_GT(faces, 0u);
   EXPECT_NE(html.find("scaled Jacobian"), std::string::npos);
+  // Log-scale bars, and the threshold 0 marked on the scaled Jacobian's
+  // range [-1, 1] (issue 23, item 3).
+  EXPECT_NE(html.find("log scale"), std::string::npos);
+  EXPECT_NE(html.find("class=\"threshold\""), std::string::npos);
   EXPECT_NE(html.find(r.verdict), std::string::npos);
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), std::filesystem::directory_iterator{}), 2);
 

@@ -78,10 +78,11 @@ std::vector<std::string> export_model(const spline::MultiPatch& model, const std
   // a format that fails leaves none of them (and the previous files) behind.
   std::vector<std::unique_ptr<AtomicPath>> targets;
   for (Format f : formats) {
-    targets.push_back(std::make_unique<AtomicPath>(basename + format_extension(f)));
+    const std::vector<std::string> paths = format_paths(basename, f);
+    targets.push_back(std::make_unique<AtomicPath>(paths.front()));
     AtomicPath& t = *targets.back();
-    if (f == Format::Vtu) {
-      targets.push_back(std::make_unique<AtomicPath>(format_paths(basename, f).back()));
+    if (f == Format::Vtu) {  // the labelled boundary beside the model
+      targets.push_back(std::make_unique<AtomicPath>(paths.back()));
       targets.back()->write([&](std::ostream& out) { write_vtu_boundary(model, out); }, true);
     }
     switch (f) {

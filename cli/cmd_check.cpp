@@ -12,6 +12,7 @@
 #include "igaprep/core/error.h"
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/iga_check/report.h"
+#include "igaprep/pipeline/provenance.h"
 
 namespace igaprep::cli {
 
@@ -35,7 +36,8 @@ int run_check(const CheckArgs& a, const CheckLimitFlags& limits) {
   in.options.allow_degenerate = a.allow_degenerate;
   in.options.certify.max_degree = a.max_degree;
   limits.apply(in.options);
-  const iga_check::CheckReport r = iga_check::build_check_report(mp, in.meshes, in.labels, in.options, a.model);
+  iga_check::CheckReport r = iga_check::build_check_report(mp, in.meshes, in.labels, in.options, a.model);
+  pipeline::stamp_report(r);
   iga_check::write_report(r, a.report_dir);
   for (const auto& w : r.warnings) std::cerr << "warning: " << w << "\n";
   std::cout << r.verdict << "\n" << std::flush;

@@ -14,7 +14,7 @@ namespace igaprep::cli {
 
 void add_export_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
-      "export", "Write an igaprep HDF5 model as hdf5 (.h5), gismo (.xml), mfem (.mesh), vtu (.vtu) or bext (.bext)");
+      "export", "Write an igaprep HDF5 model as hdf5 (.h5), gismo (.xml), mfem (.mesh), vtu (.vtu) or bext (LS-DYNA: .k and _partN.bext)");
   auto model = std::make_shared<std::string>();
   auto formats = std::make_shared<std::string>();
   auto basename = std::make_shared<std::string>();
@@ -24,10 +24,12 @@ void add_export_command(CLI::App& app) {
   set_body(sub, [=] {
     // Formats first: a typo is reported before any file is read or written.
     const std::vector<exporter::Format> list = exporter::parse_formats(*formats);
-    std::vector<std::string> outputs;
-    for (const exporter::Format f : list) outputs.push_back(*basename + exporter::format_extension(f));
-    refuse_replacing_inputs({*model}, outputs);
     const spline::MultiPatch mp = exporter::read_hdf5_model(*model);
+    std::vector<std::string> outputs;
+    for (const exporter::Format f : list)
+      for (const std::string& path : exporter::format_paths(*basename, f, static_cast<int>(mp.materials.size())))
+        outputs.push_back(path);
+    refuse_replacing_inputs({*model}, outputs);
     for (const std::string& path : exporter::export_model(mp, *basename, list)) std::cout << "wrote " << path << "\n";
     return 0;
   });

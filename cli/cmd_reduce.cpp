@@ -14,6 +14,7 @@
 #include "commands.h"
 #include "igaprep/core/input_files.h"
 #include "igaprep/export/hdf5_model.h"
+#include "igaprep/pipeline/provenance.h"
 #include "igaprep/pipeline/reduce.h"
 #include "print_observer.h"
 
@@ -47,6 +48,7 @@ int run_reduce(const ReduceArgs& a, const CheckLimitFlags& limits) {
   pipeline::CheckedReduction r = pipeline::reduce_checked(mp, settings, in.meshes, in.options, observer);
   r.reduced.report.model = a.output;
   exporter::write_hdf5_model(r.reduction.model, a.output);
+  pipeline::stamp_report(r.reduced.report);
   if (!a.report_dir.empty()) iga_check::write_report(r.reduced.report, a.report_dir);
   std::cout << r.reduced.report.verdict << "\n" << std::flush;
   print_failed_criteria(r.reduced.report);

@@ -6,11 +6,13 @@
 // max_displacement. Bad input: error, exit 1, nothing written.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <sstream>
 
 #include "commands.h"
+#include "igaprep/core/atomic_file.h"
 #include "igaprep/core/input_files.h"
 #include "igaprep/core/error.h"
 #include "igaprep/export/hdf5_model.h"
@@ -100,8 +102,14 @@ int run_solve(const SolveArgs& a) {
     throw bad_input("no constraints: give --fix LABEL[:COMPONENTS] so that no rigid-body motion is left free");
 
   const spline::MultiPatch model = exporter::read_hdf5_model(a.model);
+  // The output's folder is made and tried before the solve, not after it.
+  create_output_folder(std::filesystem::path(a.output).parent_path().string().empty()
+                           ? "."
+                           : std::filesystem::path(a.output).parent_path().string());
+  AtomicPath output(a.output);
   const iga_check::ElasticitySolution sol = iga_check::solve_elasticity(model, problem, options);
-  exporter::write_hdf5_model(sol.model, a.output);
+  exporter::write_hdf5_model(sol.model, output);
+  output.commit();
 
   const auto& r = sol.report;
   std::printf("solve: %lld unknowns (%lld fixed), %lld non-zeros, %lld elements, %lld quadrature points\n",

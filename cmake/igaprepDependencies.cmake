@@ -1,12 +1,34 @@
 # Finds igaprep's third-party dependencies (all Debian 12 packages) and makes
 # imported targets for those that ship no usable CMake package.
-# Used by the build and by the installed igaprepConfig.cmake.
+# Used by the build (everything) and by the installed igaprepConfig.cmake,
+# which sets IGAPREP_NEEDED_DEPENDENCIES to what the asked components need
+# (eigen, cgal, tetgen, hdf5, ceres, cholmod, json, openssl).
 include(CMakeFindDependencyMacro)
+if(NOT DEFINED IGAPREP_NEEDED_DEPENDENCIES)
+  set(IGAPREP_NEEDED_DEPENDENCIES eigen cgal tetgen hdf5 ceres cholmod json openssl)
+endif()
+macro(igaprep_needs dependency result)
+  list(FIND IGAPREP_NEEDED_DEPENDENCIES ${dependency} _igaprep_at)
+  if(_igaprep_at EQUAL -1)
+    set(${result} OFF)
+  else()
+    set(${result} ON)
+  endif()
+endmacro()
 
 find_dependency(Eigen3 3.3 NO_MODULE)
-find_dependency(CGAL)
-find_dependency(nlohmann_json 3)
-find_dependency(OpenSSL)
+igaprep_needs(cgal _igaprep_need)
+if(_igaprep_need)
+  find_dependency(CGAL)
+endif()
+igaprep_needs(json _igaprep_need)
+if(_igaprep_need)
+  find_dependency(nlohmann_json 3)
+endif()
+igaprep_needs(openssl _igaprep_need)
+if(_igaprep_need)
+  find_dependency(OpenSSL)
+endif()
 # Ceres Solver (libceres-dev): the L-BFGS of spline/'s joint Jacobian repair.
 # BLAS through libblas.so.3, which Debian's alternatives point at the best
 # BLAS installed (OpenBLAS), never ATLAS's libf77blas: linked first it took
@@ -14,10 +36,13 @@ find_dependency(OpenSSL)
 # factorization 3 times slower). FindBLAS (run by Ceres for SuiteSparse)
 # picks ATLAS by default, and Debian's Ceres names it in its link interface
 # though Ceres calls LAPACK only.
-if(NOT DEFINED BLA_VENDOR)
+igaprep_needs(ceres _igaprep_need)
+if(_igaprep_need AND NOT DEFINED BLA_VENDOR)
   set(BLA_VENDOR Generic)
 endif()
-find_dependency(Ceres)
+if(_igaprep_need)
+  find_dependency(Ceres)
+endif()
 if(TARGET Ceres::ceres)
   get_target_property(_igaprep_ceres_links Ceres::ceres INTERFACE_LINK_LIBRARIES)
   list(FILTER _igaprep_ceres_links EXCLUDE REGEX "lib(f77blas|atlas)\\.so$")
@@ -25,13 +50,17 @@ if(TARGET Ceres::ceres)
   unset(_igaprep_ceres_links)
 endif()
 # FindHDF5 test-compiles a C program: a C++-only consumer needs C enabled.
-if(NOT CMAKE_C_COMPILER_LOADED)
-  enable_language(C)
+igaprep_needs(hdf5 _igaprep_need)
+if(_igaprep_need)
+  if(NOT CMAKE_C_COMPILER_LOADED)
+    enable_language(C)
+  endif()
+  find_dependency(HDF5 COMPONENTS C)
 endif()
-find_dependency(HDF5 COMPONENTS C)
 
 # TetGen (libtet1.5-dev): header tetgen.h, library libtet.so, needs TETLIBRARY.
-if(NOT TARGET igaprep_dep_tetgen)
+igaprep_needs(tetgen _igaprep_need)
+if(_igaprep_need AND NOT TARGET igaprep_dep_tetgen)
   find_path(IGAPREP_TETGEN_INCLUDE_DIR tetgen.h REQUIRED)
   find_library(IGAPREP_TETGEN_LIBRARY NAMES tet REQUIRED)
   add_library(igaprep_dep_tetgen INTERFACE IMPORTED)
@@ -43,7 +72,8 @@ endif()
 
 # HDF5 (serial), its C API only: export/ calls H5F/H5G/H5D/H5A directly
 # (export/src/hdf5_handle.h), not the C++ wrapper.
-if(NOT TARGET igaprep_dep_hdf5)
+igaprep_needs(hdf5 _igaprep_need)
+if(_igaprep_need AND NOT TARGET igaprep_dep_hdf5)
   add_library(igaprep_dep_hdf5 INTERFACE IMPORTED)
   set_target_properties(igaprep_dep_hdf5 PROPERTIES
     INTERFACE_INCLUDE_DIRECTORIES "${HDF5_INCLUDE_DIRS}"
@@ -51,7 +81,8 @@ if(NOT TARGET igaprep_dep_hdf5)
 endif()
 
 # CHOLMOD (libsuitesparse-dev) is optional: Eigen's simplicial LDLT otherwise.
-if(NOT TARGET igaprep_dep_cholmod)
+igaprep_needs(cholmod _igaprep_need)
+if(_igaprep_need AND NOT TARGET igaprep_dep_cholmod)
   find_path(IGAPREP_CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse)
   find_library(IGAPREP_CHOLMOD_LIBRARY NAMES cholmod)
   find_library(IGAPREP_SUITESPARSECONFIG_LIBRARY NAMES suitesparseconfig)

@@ -1,6 +1,7 @@
 #include "igaprep/export/export_model.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <memory>
 
 #include "igaprep/core/atomic_file.h"
@@ -36,7 +37,7 @@ std::string format_extension(Format f) {
     case Format::Gismo: return ".xml";
     case Format::Mfem: return ".mesh";
     case Format::Vtu: return ".vtu";
-    case Format::Bext: return ".bext";
+    case Format::Bext: return ".k";
   }
   return "";
 }
@@ -66,32 +67,41 @@ std::vector<Format> parse_formats(const std::string& list) {
   return out;
 }
 
-std::vector<std::string> format_paths(const std::string& basename, Format f) {
+std::vector<std::string> format_paths(const std::string& basename, Format f, int materials) {
   if (f == Format::Vtu) return {basename + ".vtu", basename + "_boundary.vtu"};
+  if (f == Format::Bext) return bext_paths(basename, materials);
   return {basename + format_extension(f)};
 }
 
 std::vector<std::string> export_model(const spline::MultiPatch& model, const std::string& basename,
-                                      const std::vector<Format>& formats, const VtuOptions& vtu) {
+                                      const std::vector<Format>& formats, const VtuOptions& vtu,
+                                      const ProgressCallback& progress) {
   detail::check_model_for_writing(model, "'" + basename + "'");
   // Every format into its temporary file first, then all renamed into place:
   // a format that fails leaves none of them (and the previous files) behind.
   std::vector<std::unique_ptr<AtomicPath>> targets;
-  for (Format f : formats) {
-    const std::vector<std::string> paths = format_paths(basename, f);
+  for (const Format& f : formats) {
+    const std::vector<std::string> paths = format_paths(basename, f, static_cast<int>(model.materials.size()));
     targets.push_back(std::make_unique<AtomicPath>(paths.front()));
     AtomicPath& t = *targets.back();
     if (f == Format::Vtu) {  // the labelled boundary beside the model
       targets.push_back(std::make_unique<AtomicPath>(paths.back()));
       targets.back()->write([&](std::ostream& out) { write_vtu_boundary(model, out); }, true);
     }
+    std::vector<std::string> part_files;  // bext: the deck names them relative to itself
+    for (std::size_t m = 1; f == Format::Bext && m < paths.size(); ++m) {
+      part_files.push_back(std::filesystem::path(paths[m]).filename().string());
+      targets.push_back(std::make_unique<AtomicPath>(paths[m]));
+      targets.back()->write([&](std::ostream& out) { write_bext_part(model, static_cast<int>(m) - 1, out); });
+    }
     switch (f) {
       case Format::Hdf5: write_hdf5_model(model, t); break;
       case Format::Gismo: t.write([&](std::ostream& out) { write_gismo_xml(model, out); }); break;
       case Format::Mfem: t.write([&](std::ostream& out) { write_mfem_mesh(model, out); }); break;
       case Format::Vtu: t.write([&](std::ostream& out) { write_vtu_bezier(model, out, vtu); }, true); break;
-      case Format::Bext: t.write([&](std::ostream& out) { write_bext(model, out); }); break;
+      case Format::Bext: t.write([&](std::ostream& out) { write_lsdyna_deck(model, part_files, out); }); break;
     }
+    if (progress) progress("export", static_cast<std::size_t>(&f - formats.data()) + 1, formats.size());
   }
   std::vector<std::string> written;
   for (auto& t : targets) {

@@ -10,10 +10,12 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <vector>
 
 #include "igaprep/core/atomic_file.h"
 #include "igaprep/core/error.h"
+#include "igaprep/core/point_merger.h"
 #include "igaprep/spline/basis.h"
 #include "igaprep/spline/bezier_extraction.h"
 #include "igaprep/spline/evaluate.h"
@@ -60,7 +62,7 @@ struct Grid {
   std::vector<int64_t> connectivity, offsets;
   std::vector<int32_t> degrees, material, patch, element;  // degrees, element (i, j, k): 3 per cell
   std::vector<double> min_scaled_jacobian;                // per cell
-  std::vector<int32_t> point_material, point_patch;       // per point: slices keep them exact
+  std::vector<int32_t> point_material, point_patch;       // per point: slices keep them exact (a point shared by patches: the first)
 };
 
 // The smallest scaled Jacobian at the element's (p + 1)^3 equispaced nodes
@@ -221,6 +223,50 @@ void build_grid(const spline::MultiPatch& model, Grid& g) {
   }
 }
 
+// Points of different cells that coincide (to 1e-10 of the diagonal) with
+// the same weight and material become one point, so VTK sees which faces
+// are shared (Extract Surface gives the boundary and the material
+// interfaces, not every element face). Not for results: von Mises is
+// discontinuous between elements, so each cell keeps its own points then.
+void share_coincident_points(Grid& g) {
+  const std::size_t n = g.weights.size();
+  if (n == 0) return;
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
+  for (std::size_t i = 0; i < n; ++i) {
+    lo = lo.cwiseMin(Eigen::Vector3d(g.points[3 * i], g.points[3 * i + 1], g.points[3 * i + 2]));
+    hi = hi.cwiseMax(Eigen::Vector3d(g.points[3 * i], g.points[3 * i + 1], g.points[3 * i + 2]));
+  }
+  const double tol = 1e-10 * std::max((hi - lo).norm(), 1e-300);
+  struct Shared {
+    PointMerger merger;
+    std::vector<int64_t> point;  // merger vertex -> point of the shared grid
+  };
+  std::map<int32_t, Shared> by_material;
+  std::vector<int64_t> shared_of(n);
+  std::vector<double> points, weights;
+  std::vector<int32_t> material, patch;
+  for (std::size_t i = 0; i < n; ++i) {
+    Shared& s = by_material.try_emplace(g.point_material[i], Shared{PointMerger(tol), {}}).first->second;
+    const auto [vertex, added] = s.merger.insert(Eigen::Vector3d(g.points[3 * i], g.points[3 * i + 1], g.points[3 * i + 2]));
+    if (added) s.point.push_back(static_cast<int64_t>(weights.size()));
+    const int64_t at = s.point[static_cast<std::size_t>(vertex)];
+    if (!added && std::abs(weights[static_cast<std::size_t>(at)] - g.weights[i]) <= 1e-12 * std::abs(g.weights[i])) {
+      shared_of[i] = at;
+      continue;
+    }
+    shared_of[i] = static_cast<int64_t>(weights.size());  // new, or the same place with another weight
+    points.insert(points.end(), {g.points[3 * i], g.points[3 * i + 1], g.points[3 * i + 2]});
+    weights.push_back(g.weights[i]);
+    material.push_back(g.point_material[i]);
+    patch.push_back(g.point_patch[i]);
+  }
+  for (int64_t& c : g.connectivity) c = shared_of[static_cast<std::size_t>(c)];
+  g.points = std::move(points);
+  g.weights = std::move(weights);
+  g.point_material = std::move(material);
+  g.point_patch = std::move(patch);
+}
+
 }  // namespace
 
 void write_vtu_bezier(const spline::MultiPatch& model, std::ostream& out, const VtuOptions& options) {
@@ -228,6 +274,7 @@ void write_vtu_bezier(const spline::MultiPatch& model, std::ostream& out, const 
   Grid g;
   build_grid(model, g);
   const bool solution = !g.von_mises.empty();
+  if (!solution) share_coincident_points(g);
   const size_t npts = g.weights.size(), ncells = g.offsets.size();
   if (!options.certified_lower_bound.empty() && options.certified_lower_bound.size() != ncells)
     throw bad_input("VTU Bezier: " + std::to_string(options.certified_lower_bound.size()) +

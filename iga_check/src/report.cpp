@@ -14,6 +14,7 @@
 #include "igaprep/core/error.h"
 #include "igaprep/core/text.h"
 #include "igaprep/iga_check/model_picture.h"
+#include "igaprep/spline/evaluate.h"
 
 namespace igaprep::iga_check {
 
@@ -390,7 +391,14 @@ CheckReport build_check_report(const spline::MultiPatch& mp, const std::vector<m
     patch_min.push_back(r.quality.patches[p].scaled_jacobian.min);
     patch_failed.push_back(!r.patches[p].passed);
   }
-  r.picture_svg = model_picture_svg(mp, patch_min, patch_failed);
+  std::vector<PictureMark> marks;
+  for (std::size_t i = 0; i < r.worst_elements.size() && i < 5; ++i) {
+    const ElementCertificate& c = r.worst_elements[i];
+    marks.push_back({spline::evaluate_point(mp.patches[static_cast<std::size_t>(c.patch)], c.location), std::to_string(i + 1)});
+  }
+  r.picture_svg = model_picture_svg(mp, patch_min, patch_failed, PictureColour::quality, marks);
+  r.picture_by_patch_svg = model_picture_svg(mp, patch_min, patch_failed, PictureColour::patch);
+  r.picture_by_material_svg = model_picture_svg(mp, patch_min, patch_failed, PictureColour::material);
   r.passed = std::all_of(r.criteria.begin(), r.criteria.end(), [](const Criterion& c) { return c.passed; });
   for (const Criterion& c : r.criteria)
     if (!c.checked) r.warnings.push_back(c.name + " " + c.summary);
@@ -425,6 +433,8 @@ std::string report_json(const CheckReport& r) {
   j["format"] = "igaprep-check-report";
   j["format_version"] = 1;
   j["model"] = r.model;
+  j["generator"] = r.generator;
+  j["date"] = r.date;
   const ElementTotals totals = element_totals(r);
   double min_lower = std::numeric_limits<double>::infinity();
   for (const auto& c : r.certificates) min_lower = std::min(min_lower, c.lower_bound);
@@ -527,6 +537,19 @@ std::string report_json(const CheckReport& r) {
   return j.dump(2) + "\n";
 }
 
+namespace {
+// ParaView steps for the VTU files a run writes beside this report.
+std::string how_to_view_html() {
+  return "<h2>How to view the model</h2>\n<ol>\n<li>Open <code>model.vtu</code> (or <code>run.pvd</code>, which "
+         "groups the model, its boundary and the solve's result) in ParaView and press Apply.</li>\n<li>The cells are "
+         "curved Bezier hexahedra: in the Properties panel set <em>Nonlinear Subdivision Level</em> to 2.</li>\n"
+         "<li>Choose <em>Surface With Edges</em> and colour by <code>patch</code>, <code>material</code> or "
+         "<code>min_scaled_jacobian</code> (cell data; 1 is a perfect cube, below 0 folded).</li>\n<li>"
+         "<code>model_boundary.vtu</code> is the labelled outer surface alone (colour by <code>label</code>). To see "
+         "inside, <em>Slice</em> and colour the slice by the point array <code>material</code>.</li>\n</ol>\n";
+}
+}  // namespace
+
 std::string report_html(const CheckReport& r) {
   std::ostringstream h;
   h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>igaprep check: "
@@ -535,16 +558,23 @@ std::string report_html(const CheckReport& r) {
     << "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;padding:3px 8px;text-align:right}\n"
     << "th{background:#eee}.pass{color:#1a7f37;font-weight:bold}.fail{color:#c62828;font-weight:bold}\n"
     << "svg .t{font-size:14px}svg .a{font-size:11px}\n"
+    << ".pair{display:flex;gap:1em}.pair figure{margin:0;flex:1}.pair svg{width:100%;height:auto}\n"
     << "</style>\n</head>\n<body>\n";
   h << "<h1>Analysis-suitability report</h1>\n<p>Model: <code>" << esc(r.model) << "</code>; bounding-box diagonal "
     << fmt(r.diagonal) << "</p>\n";
+  if (!r.generator.empty() || !r.date.empty())
+    h << "<p id=\"made\">Made by " << esc(r.generator.empty() ? "igaprep" : r.generator)
+      << (r.date.empty() ? "" : " on " + esc(r.date)) << ".</p>\n";
   h << "<p id=\"verdict\" class=\"" << (r.passed ? "pass" : "fail") << "\">" << esc(r.verdict) << "</p>\n";
   h << criteria_html(r.criteria);
   if (!r.picture_svg.empty())
     h << "<h2>Model</h2>\n<figure>\n" << r.picture_svg
       << "<figcaption>The labelled boundary, one face per element, coloured by its patch's smallest sampled scaled "
-         "Jacobian (red 0 or less, yellow 0.5, blue 1); patches that fail are outlined in red. To look closer, open "
-         "model.vtu in ParaView.</figcaption>\n</figure>\n";
+         "Jacobian (red 0 or less, yellow 0.5, blue 1); patches that fail are outlined in red; the rings 1 to 5 mark "
+         "the worst elements of the table below (seen through the model).</figcaption>\n</figure>\n<div class=\"pair\">\n<figure>\n"
+      << r.picture_by_patch_svg << "<figcaption>The same view coloured by patch.</figcaption>\n</figure>\n<figure>\n"
+      << r.picture_by_material_svg << "<figcaption>The same view coloured by material.</figcaption>\n</figure>\n</div>\n"
+      << how_to_view_html();
   if (r.pipeline) h << pipeline_html(*r.pipeline);
   h << "<h2>Patches</h2>\n<table>\n<tr><th>patch</th><th>material</th><th>elements</th><th>positive</th>"
        "<th>negative</th><th>degenerate</th><th>undecided</th><th>certified min det J &ge;</th><th>min det J "
@@ -562,12 +592,14 @@ std::string report_html(const CheckReport& r) {
   h << "</table>\n<h2>Histograms (all sample points)</h2>\n";
   h << svg_histogram(r.quality.overall.scaled_jacobian.histogram, "scaled Jacobian");
   h << svg_histogram(r.quality.overall.det_j.histogram, "det J");
-  h << "<h2>Worst elements (certified lower bound of det J)</h2>\n<table>\n<tr><th>patch</th><th>element</th>"
+  h << "<h2>Worst elements (certified lower bound of det J)</h2>\n<table>\n<tr><th>#</th><th>patch</th><th>element</th>"
        "<th>status</th><th>lower bound</th><th>upper bound</th><th>at (u, v, w)</th></tr>\n";
-  for (const auto& c : r.worst_elements)
-    h << "<tr><td>" << c.patch << "</td><td>" << c.element[0] << ", " << c.element[1] << ", " << c.element[2]
+  for (std::size_t i = 0; i < r.worst_elements.size(); ++i) {
+    const ElementCertificate& c = r.worst_elements[i];
+    h << "<tr><td>" << i + 1 << "</td><td>" << c.patch << "</td><td>" << c.element[0] << ", " << c.element[1] << ", " << c.element[2]
       << "</td><td>" << to_string(c.status) << "</td><td>" << fmt(c.lower_bound) << "</td><td>" << fmt(c.upper_bound)
       << "</td><td>" << fmt(c.location[0]) << ", " << fmt(c.location[1]) << ", " << fmt(c.location[2]) << "</td></tr>\n";
+  }
   h << "</table>\n<h2>Worst points (scaled Jacobian)</h2>\n<table>\n<tr><th>patch</th><th>element</th><th>(u, v, "
        "w)</th><th>scaled J</th><th>det J</th><th>condition</th></tr>\n";
   for (const auto& q : r.quality.worst)

@@ -10,7 +10,7 @@
 #include <Eigen/Geometry>
 
 #include "igaprep/core/error.h"
-#include "igaprep/param/point_merger.h"
+#include "igaprep/core/point_merger.h"
 
 namespace igaprep::param {
 

@@ -53,6 +53,11 @@ std::string run_date_utc() {
   return buf;
 }
 
+void stamp_report(iga_check::CheckReport& report) {
+  report.generator = generator_name();
+  report.date = run_date_utc();
+}
+
 void fill_provenance(const Case& c, spline::MultiPatch& model) {
   using nlohmann::json;
   json surfaces = json::array();

@@ -124,6 +124,7 @@ void write_report_and_commit(RunResult& r, OutputFolder* folder) {
   write_collection(*folder, r.report.pipeline->outputs);
   r.report.pipeline->outputs.push_back("report.json");
   r.report.pipeline->outputs.push_back("report.html");
+  stamp_report(r.report);
   iga_check::write_report(r.report, folder->staging());
   folder->commit({"report.json", "report.html"});
 }
@@ -197,7 +198,8 @@ void refuse_replacing_case_files(const Case& c, const std::string& output_dir) {
     outputs.push_back((fs::path(output_dir) / name).string());
   for (const std::string& format : c.export_formats)
     for (const std::string& path :
-         exporter::format_paths((fs::path(output_dir) / "model").string(), exporter::parse_formats(format).at(0)))
+         exporter::format_paths((fs::path(output_dir) / "model").string(), exporter::parse_formats(format).at(0),
+                                static_cast<int>(c.materials.size())))
       outputs.push_back(path);
   refuse_replacing_inputs(inputs, outputs);
 }

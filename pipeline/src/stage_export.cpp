@@ -22,7 +22,8 @@ Exported export_stage(const spline::MultiPatch& model, const std::vector<std::st
   exporter::VtuOptions vtu;
   for (const iga_check::ElementCertificate& c : certificates) vtu.certified_lower_bound.push_back(c.lower_bound);
   if (!list.empty())
-    for (const std::string& path : exporter::export_model(model, base, list, vtu)) r.written.push_back(path);
+    for (const std::string& path : exporter::export_model(model, base, list, vtu, progress_to(observer)))
+      r.written.push_back(path);
   r.seconds = timer.seconds();
   std::string names;
   for (std::size_t i = 0; i < r.written.size(); ++i)

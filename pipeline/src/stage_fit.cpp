@@ -35,7 +35,7 @@ int connect_and_label(const param::VolumeParam& vp, double diag, spline::MultiPa
 // case's target (optimize_jacobian.h): those on T1 and the Ti slide along
 // them, collapsed sides stay.
 spline::JacobianOptimizationResult raise_jacobians(const Case& c, const Decomposition& d, const param::VolumeParam& vp,
-                                                   spline::MultiPatch& mp) {
+                                                   spline::MultiPatch& mp, Observer& observer) {
   const std::vector<param::SurfaceProjector> surfaces = param::surface_projectors(d.H);
   auto slide = [&](int surface, const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
     return surfaces.at(static_cast<std::size_t>(surface)).slide(from, to);
@@ -44,7 +44,9 @@ spline::JacobianOptimizationResult raise_jacobians(const Case& c, const Decompos
   for (std::size_t p = 0; p < vp.blocks.size(); ++p)
     for (const spline::Side side : spline::Side::all())
       if (vp.blocks[p].collapsed[static_cast<std::size_t>(side.index() - 1)]) fixed.emplace_back(static_cast<int>(p), side);
-  return spline::optimize_jacobians(mp, slide, fixed, c.jacobian);
+  spline::JacobianOptimizationOptions options = c.jacobian;
+  options.progress = progress_to(observer);
+  return spline::optimize_jacobians(mp, slide, fixed, options);
 }
 
 }  // namespace
@@ -65,7 +67,7 @@ Fit fit_stage(const Case& c, const Decomposition& d, const param::VolumeParam& v
                  {}};
   if (c.jacobian.target > 0.0) {
     StageTimer jt;
-    out.jacobians = raise_jacobians(c, d, vp, mp);
+    out.jacobians = raise_jacobians(c, d, vp, mp, observer);
     const auto& r = out.jacobians;
     s.details.push_back(text("Jacobians %.2f s: lowest sampled scaled Jacobian %.3f -> %.3f, points below %.2f: %d -> "
                              "%d (%d control points moved, at most %.2g, %d patches on dense samples; joint: %d points, "

@@ -328,8 +328,12 @@ class QuietCeres {
 constexpr int kStallIterations = 20;
 class StopAtTarget : public ceres::IterationCallback {
  public:
-  StopAtTarget(const Penalty& penalty, const double* y) : penalty_(penalty), y_(y) {}
-  ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
+  StopAtTarget(const Penalty& penalty, const double* y, const ProgressCallback& progress, int limit)
+      : penalty_(penalty), y_(y), progress_(progress), limit_(limit) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    if (progress_)
+      progress_("Jacobian repair (optimization)", static_cast<std::size_t>(std::min(s.iteration, limit_)),
+                static_cast<std::size_t>(limit_));
     const long below = penalty_.below_at(y_);
     if (below == 0) return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
     if (below > 0 && below < fewest_) {
@@ -346,6 +350,8 @@ class StopAtTarget : public ceres::IterationCallback {
  private:
   const Penalty& penalty_;
   const double* y_;
+  const ProgressCallback& progress_;
+  int limit_;
   long fewest_ = std::numeric_limits<long>::max();
   int since_fewest_ = 0;
   bool stalled_ = false;
@@ -364,7 +370,7 @@ std::string stop_reason(const ceres::GradientProblemSolver::Summary& s, const St
 JointRepairResult joint_repair(MultiPatch& mp, const GlobalNumbering& num, const std::vector<std::vector<Copy>>& copies,
                                const std::vector<int>& cons,
                                const SlideFn& slide, double target, const std::vector<int>& points, int iterations,
-                               std::vector<char>* moved) {
+                               std::vector<char>* moved, const ProgressCallback& progress) {
   JointRepairResult out;
   std::vector<Variable> vars =
       make_variables(mp, copies, cons, movable_near_low_samples(mp, num, cons, points, std::min(1.0, target + kReach)), slide);
@@ -390,7 +396,7 @@ JointRepairResult joint_repair(MultiPatch& mp, const GlobalNumbering& num, const
   options.logging_type = ceres::SILENT;
   options.function_tolerance = 1e-8;
   options.update_state_every_iteration = true;  // StopAtTarget reads the iterate
-  StopAtTarget stop(*penalty, y.data());
+  StopAtTarget stop(*penalty, y.data(), progress, iterations);
   options.callbacks.push_back(&stop);
   ceres::GradientProblemSolver::Summary summary;
   {

@@ -27,8 +27,10 @@ struct JointRepairResult {
 // target + 0.1 move: free ones in space, sliding ones along their surface
 // (in the tangent plane found through `slide`, then put back by it), fixed
 // ones not. Sets moved[g] for each global control point that moved.
+// progress, if given, hears of each iteration.
 JointRepairResult joint_repair(MultiPatch& mp, const GlobalNumbering& num, const std::vector<std::vector<Copy>>& copies,
                                const std::vector<int>& cons, const SlideFn& slide, double target,
-                               const std::vector<int>& points, int iterations, std::vector<char>* moved);
+                               const std::vector<int>& points, int iterations, std::vector<char>* moved,
+                               const ProgressCallback& progress = {});
 
 }  // namespace igaprep::spline::detail

@@ -287,6 +287,8 @@ JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& sli
     int since_fewest = 0;
     out.stop_reason = "the sweep limit";
     for (int sweep = 0; sweep < options.sweeps; ++sweep) {
+      if (options.progress)
+        options.progress("Jacobian repair (sweeps)", static_cast<std::size_t>(sweep), static_cast<std::size_t>(options.sweeps));
       long long moves = 0;
       std::vector<char> active(static_cast<std::size_t>(num.count), 0);
       opt.below_target(options.target, [&](int patch, int local) {
@@ -324,7 +326,8 @@ JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& sli
   auto repair = [&](const std::vector<int>& points) {
     if (options.iterations > 0) {
       const detail::JointRepairResult j =
-          detail::joint_repair(mp, num, copies, cons, slide, options.target, points, options.iterations, &moved);
+          detail::joint_repair(mp, num, copies, cons, slide, options.target, points, options.iterations, &moved,
+                               options.progress);
       out.joint_variables += j.variables;
       out.joint_iterations += j.iterations;
       out.joint_stop = j.stop;

@@ -85,8 +85,10 @@ TEST(CheckReport, SphereShellReportFilesAndDocumentedKeys) {
   EXPECT_NE(strict.verdict.find("only degenerate elements fail"), std::string::npos) << strict.verdict;
   EXPECT_EQ(strict.verdict.find("--"), std::string::npos) << strict.verdict;
   opt.allow_degenerate = true;
-  const CheckReport r = build_check_report(mp, surfaces, {"outer", "inner"}, opt, "sphere_shell");
+  CheckReport r = build_check_report(mp, surfaces, {"outer", "inner"}, opt, "sphere_shell");
   EXPECT_TRUE(r.passed) << r.verdict;
+  r.generator = "igaprep test";
+  r.date = "2026-12-03T07:00:00Z";
   EXPECT_EQ(r.verdict.rfind("PASS", 0), 0u);
 
   const std::string dir = std::string(IGAPREP_BINARY_DIR) + "/test_check_report";
@@ -102,7 +104,7 @@ TEST(CheckReport, SphereShellReportFilesAndDocumentedKeys) {
   EXPECT_EQ(html.find("url("), std::string::npos);
   size_t svgs = 0;
   for (size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) ++svgs;
-  EXPECT_EQ(svgs, 3u);  // the model's picture and two histograms
+  EXPECT_EQ(svgs, 5u);  // the model's three pictures and two histograms
   // Issue 23, item 3: the model drawn in the report, one polygon per element
   // face on a labelled side.
   EXPECT_NE(html.find("<svg id=\"model-picture\""), std::string::npos);
@@ -117,8 +119,16 @@ TEST(CheckReport, SphereShellReportFilesAndDocumentedKeys) {
   }
   std::size_t polygons = 0;
   for (size_t at = html.find("<polygon"); at != std::string::npos; at = html.find("<polygon", at + 1)) ++polygons;
-  EXPECT_EQ(polygons, faces);
+  EXPECT_EQ(polygons, 3 * faces);  // by quality, by patch, by material
   EXPECT_GT(faces, 0u);
+  // The worst elements marked on the quality picture, numbered as in their table.
+  std::size_t marks = 0;
+  for (size_t at = html.find("class=\"mark\""); at != std::string::npos; at = html.find("class=\"mark\"", at + 1)) ++marks;
+  EXPECT_EQ(marks, std::min<std::size_t>(5, r.worst_elements.size()));
+  EXPECT_GT(marks, 0u);
+  // Version and date (issue 23, item 3), and how to view the model.
+  EXPECT_NE(html.find("Made by igaprep test on 2026-12-03T07:00:00Z."), std::string::npos);
+  EXPECT_NE(html.find("Nonlinear Subdivision Level"), std::string::npos);
   EXPECT_NE(html.find("scaled Jacobian"), std::string::npos);
   // Log-scale bars, and the threshold 0 marked on the scaled Jacobian's
   // range [-1, 1] (issue 23, item 3).
@@ -149,7 +159,10 @@ TEST(CheckReport, SphereShellReportFilesAndDocumentedKeys) {
   for (long c : j["quality"]["scaled_jacobian"]["histogram"]["counts"]) total += c;
   EXPECT_EQ(total, j["quality"]["scaled_jacobian"]["count"].get<long>());
   // Same input, byte-identical output.
-  EXPECT_EQ(report_json(build_check_report(mp, surfaces, {"outer", "inner"}, opt, "sphere_shell")), report_json(r));
+  CheckReport again = build_check_report(mp, surfaces, {"outer", "inner"}, opt, "sphere_shell");
+  again.generator = r.generator;
+  again.date = r.date;
+  EXPECT_EQ(report_json(again), report_json(r));
 }
 
 TEST(CheckReport, FoldedModelFailsAndNamesThePatch) {

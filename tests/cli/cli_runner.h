@@ -14,9 +14,10 @@ struct CliResult {
   std::string out;  // stdout and stderr together
 };
 
-inline CliResult run_cli(const std::string& args) {
+// Any shell command, stdout and stderr together.
+inline CliResult run_command(const std::string& shell_command) {
   CliResult r;
-  const std::string command = std::string(IGAPREP_CLI) + " " + args + " 2>&1";
+  const std::string command = shell_command + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return r;
   std::array<char, 4096> buffer{};
@@ -26,6 +27,8 @@ inline CliResult run_cli(const std::string& args) {
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
 }
+
+inline CliResult run_cli(const std::string& args) { return run_command(std::string(IGAPREP_CLI) + " " + args); }
 
 inline std::string models_dir() { return std::string(IGAPREP_SOURCE_DIR) + "/models"; }
 

@@ -47,6 +47,28 @@ if(NOT rc EQUAL 0)
 endif()
 message(STATUS "${out}")
 
+# A consumer of the export and spline components alone, configured with
+# every other dependency hidden (cmake/igaprepConfig.cmake.in).
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer/export_only -B ${WORK_DIR}/build_export
+                -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DCMAKE_BUILD_TYPE=Release
+                -DCMAKE_DISABLE_FIND_PACKAGE_CGAL=ON -DCMAKE_DISABLE_FIND_PACKAGE_Ceres=ON
+                -DCMAKE_DISABLE_FIND_PACKAGE_OpenSSL=ON -DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=ON
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "configuring the export-only consumer failed (${rc}):\n${out}\n${err}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK_DIR}/build_export RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "building the export-only consumer failed (${rc}):\n${out}\n${err}")
+endif()
+execute_process(COMMAND ${WORK_DIR}/build_export/export_consumer ${WORK_DIR}/elsewhere/output/model.h5
+                ${WORK_DIR}/elsewhere/consumer.vtu RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "export consumer ok 128 0" OR NOT EXISTS ${WORK_DIR}/elsewhere/consumer.vtu)
+  message(FATAL_ERROR "export-only consumer: rc=${rc} output='${out}${err}'")
+endif()
+message(STATUS "${out}")
+
 # The installed Python module, from outside the build tree.
 file(GLOB python_dirs ${WORK_DIR}/prefix/lib/python3*/dist-packages)
 execute_process(COMMAND ${CMAKE_COMMAND} -E env PYTHONPATH=${python_dirs} /usr/bin/python3 -c

@@ -1,12 +1,11 @@
-"""Independent reader of the BEXT 2.0 ASCII layout igaprep writes.
+"""Independent reader of BEXT 2.0 ASCII files (the layout docs/export-formats.md
+documents: one part per file, dense coefficient blocks).
 
 Usage: read_bext.py FILE.bext
-Parses nodes, element blocks, elements and dense coefficient blocks (the
-elements refer to coefficient vectors by id, so vectors may be shared), and
-reconstructs every element's Bernstein control points as C^T times its
-global nodes in homogeneous coordinates. Prints JSON: {"nodes": N, "vectors": NUMCV,
-"elements": [{"patch", "element": [eu, ev, ew], "degrees", "points":
-[[x, y, z]...], "weights": [...]}]}.
+Reconstructs every element's Bernstein control points as C^T times its nodes
+in homogeneous coordinates (vector k of an element multiplies its k-th node).
+Prints JSON: {"pid", "nodes", "vectors", "wfl", "elements": [{"block",
+"index", "degrees", "nodes", "points": [[x, y, z]...], "weights": [...]}]}.
 """
 import json
 import sys
@@ -17,68 +16,51 @@ import numpy as np
 def main():
     lines = open(sys.argv[1]).read().splitlines()
     assert lines[0].strip() == "B E X T 2.0", lines[0]
-    body = []  # (tokens, comment) pairs in order
+    tokens = []
     for ln in lines[1:]:
-        if ln.startswith("$"):
-            body.append(("comment", ln[1:].split()))
-        elif ln.strip():
-            body.append(("data", ln.split()))
+        if not ln.startswith("$#") and ln.strip():
+            tokens.append(ln.split())
+    assert lines[-1] == "$#END FILE", lines[-1]
     pos = 0
 
-    def data():
+    def take(count, kind):
         nonlocal pos
-        while body[pos][0] != "data":
+        out = []
+        while len(out) < count:
+            out.extend(kind(x) for x in tokens[pos])
             pos += 1
-        pos += 1
-        return body[pos - 1][1]
-
-    def ints(count):
-        out = []
-        while len(out) < count:
-            out.extend(int(x) for x in data())
-        assert len(out) == count
+        assert len(out) == count, (len(out), count)
         return out
 
-    def reals(count):
-        out = []
-        while len(out) < count:
-            out.extend(float(x) for x in data())
-        assert len(out) == count
-        return out
-
-    numnod, numel, numcv, _ = ints(4)
-    nodes = np.array([reals(4) for _ in range(numnod)])
-    nblock = ints(1)[0]
-    blocks = [ints(7) for _ in range(nblock)]
+    pid, numnod, numel, numcv, wfl = take(5, int)
+    nodes = np.array([take(4, float) for _ in range(numnod)])
+    neb = take(1, int)[0]
+    blocks = [take(7, int) for _ in range(neb)]
     elements = []
-    for etype, nel, nnpe, ncvpe, pr, ps, pt in blocks:
-        for _ in range(nel):
-            while body[pos][0] != "comment" or body[pos][1][:1] != ["patch"] or "element" not in body[pos][1]:
-                pos += 1
-            c = body[pos][1]
-            pos += 1
-            patch, eu, ev, ew = int(c[1]), int(c[3]), int(c[4]), int(c[5])
-            ids = ints(nnpe)
-            vecs = ints(ncvpe)
-            elements.append({"patch": patch, "element": [eu, ev, ew], "degrees": [pr, ps, pt],
-                             "ids": ids, "vecs": vecs})
-    ndcvb = ints(1)[0]
-    sizes = [ints(2) for _ in range(ndcvb)]
+    for b, (etype, ne, nn, ncv, pr, ps, pt) in enumerate(blocks):
+        assert etype == 1 and nn == ncv == (pr + 1) * (ps + 1) * (pt + 1)
+        for i in range(ne):
+            ids = take(nn, int)
+            vecs = take(ncv, int)
+            assert ids == sorted(ids) and len(set(ids)) == len(ids), "node ids ascending and distinct"
+            elements.append({"block": b, "index": i, "degrees": [pr, ps, pt], "ids": ids, "vecs": vecs})
+    ndcvb, nscvb = take(2, int)
+    assert nscvb == 0
+    sizes = [take(2, int) for _ in range(ndcvb)]
     vectors = []
     for ncv, ncvc in sizes:
-        for _ in range(ncv):
-            vectors.append(reals(ncvc))
-    assert len(vectors) == numcv, (len(vectors), numcv)
-    assert pos == len(body) or all(k == "comment" for k, _ in body[pos:]), "trailing data"
+        vectors.extend(take(ncvc, float) for _ in range(ncv))
+    assert len(vectors) == numcv and pos == len(tokens), "counts and trailing data"
+    assert len(elements) == numel
     out = []
     for e in elements:
-        C = np.array([vectors[v - 1] for v in e["vecs"]])  # rows: local functions
+        C = np.array([vectors[v - 1] for v in e["vecs"]])  # rows: the element's nodes in order
         P = nodes[[i - 1 for i in e["ids"]]]
         hom = np.column_stack([P[:, :3] * P[:, 3:4], P[:, 3]])
         B = C.T @ hom
-        out.append({"patch": e["patch"], "element": e["element"], "degrees": e["degrees"],
+        out.append({"block": e["block"], "index": e["index"], "degrees": e["degrees"], "nodes": e["ids"],
                     "points": (B[:, :3] / B[:, 3:4]).tolist(), "weights": B[:, 3].tolist()})
-    print(json.dumps({"nodes": numnod, "vectors": numcv, "elements": out}))
+    print(json.dumps({"pid": pid, "nodes": numnod, "vectors": numcv, "wfl": wfl, "elements": out}))
 
 
 if __name__ == "__main__":

@@ -5,9 +5,11 @@ Cuts the Bezier cells with the plane through the bounding box's centre,
 normal (1, 1, 1) (through several patches and both materials), and prints
 JSON: the slice's point count, the distinct values of the point data
 "material" on it, and the range of the cell data "min_scaled_jacobian" and
-the shape of "element" in the file, and the cell data
+the shape of "element" in the file, the cell data
 "certified_det_lower_bound" when present (issue 23: higher-order cell data came
-through the cutter as values of +-2e9).
+through the cutter as values of +-2e9), and "surface_faces": the cell faces
+no other cell shares (by their corner points), which is what ParaView's
+Extract Surface returns.
 """
 import json
 import sys
@@ -15,6 +17,19 @@ import sys
 import numpy as np
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
+
+
+def unshared_faces(grid):
+    """Cell faces (VTK hexahedron corner order) that appear in one cell only."""
+    faces = {}
+    corners = ((0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (3, 0, 4, 7), (0, 3, 2, 1), (4, 5, 6, 7))
+    ids = vtk.vtkIdList()
+    for c in range(grid.GetNumberOfCells()):
+        grid.GetCellPoints(c, ids)
+        for f in corners:
+            key = tuple(sorted(ids.GetId(i) for i in f))
+            faces[key] = faces.get(key, 0) + 1
+    return sum(1 for n in faces.values() if n == 1)
 
 
 def main():
@@ -37,6 +52,7 @@ def main():
     bound = grid.GetCellData().GetArray("certified_det_lower_bound")
     bound = vtk_to_numpy(bound).tolist() if bound is not None else None
     print(json.dumps({"points": cut.GetNumberOfPoints(), "certified_det_lower_bound": bound,
+                      "surface_faces": unshared_faces(grid),
                       "materials": sorted(float(v) for v in np.unique(material)),
                       "min_scaled_jacobian": [float(q.min()), float(q.max())],
                       "element_shape": list(element.shape), "element_max": int(element.max())}))

@@ -45,14 +45,15 @@ TEST(ExportModel, WritesEveryFormatWithItsExtension) {
   const std::string dir = scratch_dir("all_formats");
   const auto written = igaprep::exporter::export_model(
       make_test_model(), dir + "/slab", igaprep::exporter::parse_formats("hdf5,gismo,mfem,vtu,bext"));
-  ASSERT_EQ(written.size(), 6u);  // vtu: the model and its labelled boundary
-  for (const char* ext : {".h5", ".xml", ".mesh", ".vtu", "_boundary.vtu", ".bext"}) {
+  // vtu: the model and its labelled boundary; bext: the deck and a file per material
+  ASSERT_EQ(written.size(), 8u);
+  for (const char* ext : {".h5", ".xml", ".mesh", ".vtu", "_boundary.vtu", ".k", "_part1.bext", "_part2.bext"}) {
     EXPECT_TRUE(std::filesystem::exists(dir + "/slab" + ext)) << ext;
     EXPECT_GT(std::filesystem::file_size(dir + "/slab" + ext), 1000u) << ext;
   }
   int files = 0;
   for (const auto& e : std::filesystem::directory_iterator(dir)) (void)e, ++files;
-  EXPECT_EQ(files, 6) << "no temporary files left";
+  EXPECT_EQ(files, 8) << "no temporary files left";
   std::filesystem::remove_all(dir);
 }
 

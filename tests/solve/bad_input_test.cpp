@@ -238,6 +238,18 @@ TEST_F(SolveCli, AnOutputThatIsTheModelIsRefused) {
   EXPECT_FALSE(exporter::read_hdf5_model(model_).has_solution);
 }
 
+// Issue 23, item 5: an output that cannot be written is refused before the
+// solve (it was found after 21 s of work on a large model), and a missing
+// folder is made.
+TEST_F(SolveCli, AnOutputFolderThatCannotBeWrittenIsRefusedFirst) {
+  EXPECT_EQ(run("--fix base --traction end=1,0,0", "/proc/igaprep_nope/result.h5"), 1) << log();
+  EXPECT_NE(log().find("/proc/igaprep_nope"), std::string::npos) << log();
+  EXPECT_EQ(log().find("solve: "), std::string::npos) << "no solve ran: " << log();
+  const std::string nested = (dir_ / "new" / "folder" / "result.h5").string();
+  EXPECT_EQ(run("--fix base --traction end=1,0,0", nested), 0) << log();
+  EXPECT_TRUE(exporter::read_hdf5_model(nested).has_solution);
+}
+
 TEST_F(SolveCli, BadInputExitsOneAndWritesNothing) {
   const std::vector<std::string> bad = {
       "--fix base:x --traction end=1,0,0",   // singular

@@ -215,10 +215,19 @@ TEST(OptimizeJacobian, JointAloneRaisesSkewedInterior) {
   MultiPatch mp = model({skewed_cube()});
   label_sides(mp, 0, 0);
   const Patch before = mp.patches[0];
-  const JacobianOptimizationResult r = optimize_jacobians(mp, nullptr, {}, joint_only());
+  JacobianOptimizationOptions options = joint_only();
+  std::vector<std::size_t> told;  // the optimization's iterations as progress (issue 23, item 6)
+  options.progress = [&](const std::string& task, std::size_t done, std::size_t total) {
+    EXPECT_EQ(task, "Jacobian repair (optimization)");
+    EXPECT_EQ(total, static_cast<std::size_t>(options.iterations));
+    told.push_back(done);
+  };
+  const JacobianOptimizationResult r = optimize_jacobians(mp, nullptr, {}, options);
   EXPECT_EQ(r.joint_stop, "the target reached");
   EXPECT_EQ(r.sweeps, 0);
   EXPECT_GT(r.joint_iterations, 0);
+  ASSERT_FALSE(told.empty());
+  EXPECT_EQ(told.back(), static_cast<std::size_t>(r.joint_iterations));
   EXPECT_LT(r.min_before, 0.2);
   EXPECT_GE(r.min_after, 0.35);
   EXPECT_GT(dense_min(mp.patches[0]), 0.3);

@@ -1,35 +1,33 @@
 #pragma once
-// BEXT 2.0 ASCII Bezier-extraction file (the geometry file of LS-DYNA's
-// *IGA_INCLUDE_BEZIER, also written by Coreform Cubit). Layout as written
-// here (docs/export-formats.md says which parts could not be checked
-// against the vendors' specification):
-//
-//   B E X T 2.0
-//   $ comment lines
-//   NUMNOD NUMEL NUMCV 0
-//   x y z w                      NUMNOD lines: global control points
-//                                (Cartesian, weight; interface points shared)
-//   NBLOCK                       element blocks, one per patch family
-//                                (patches with the same degrees)
-//   ETYPE NEL NNPE NCVPE PR PS PT   per block
-//   per element of each block, in block order:
-//     $ patch P element EU EV EW     (comment)
-//     NNPE global node ids (1-based, 10 per line)
-//     NCVPE coefficient-vector ids (1-based, 10 per line)
-//   NDCVB                        dense coefficient-vector blocks (= NBLOCK)
-//   NCV NCVC                     per block: vectors, components per vector
-//   NCV vectors of NCVC numbers (5 per line): the rows of the element's
-//   extraction operator C_e (local function -> Bernstein coefficients, u
-//   fastest), so the element's Bernstein points are C_e^T times its nodes
-//   (in homogeneous coordinates for NURBS).
+// LS-DYNA isogeometric solids: one BEXT 2.0 ASCII Bezier-extraction file per
+// material (one part each, as *IGA_INCLUDE_BEZIER takes one part per file)
+// and a keyword deck that includes them with their parts, sections, elastic
+// materials and a node set per boundary label. docs/export-formats.md gives
+// the layout, the source of every field, and what could not be checked
+// against LS-DYNA itself.
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "igaprep/spline/multipatch.h"
 
 namespace igaprep::exporter {
 
-void write_bext(const spline::MultiPatch& model, std::ostream& out);
-void write_bext(const spline::MultiPatch& model, const std::string& path);  // atomic
+// The deck BASENAME.k, then BASENAME_part<pid>.bext for pid = 1..materials.
+std::vector<std::string> bext_paths(const std::string& basename, int materials);
+
+// The BEXT file of one material's patches: its control points (numbered
+// 1..n in the order its patches first use them), one element block per
+// patch, the distinct rows of the elements' extraction operators as dense
+// coefficient vectors shared by the elements that use them.
+void write_bext_part(const spline::MultiPatch& model, int material, std::ostream& out);
+
+// The keyword deck: *PART, *SECTION_IGA_SOLID, *MAT_ELASTIC and
+// *IGA_INCLUDE_BEZIER per material (part_files[m] the file name the deck
+// refers to, relative to the deck), *SET_NODE_LIST per boundary label and part.
+void write_lsdyna_deck(const spline::MultiPatch& model, const std::vector<std::string>& part_files, std::ostream& out);
+
+// Every file of bext_paths(basename, materials), each atomically.
+void write_bext(const spline::MultiPatch& model, const std::string& basename);
 
 }  // namespace igaprep::exporter

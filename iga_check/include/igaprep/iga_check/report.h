@@ -81,12 +81,16 @@ struct PipelineSection {
 
 struct CheckReport {
   std::string model;                        // name shown in the report (e.g. the file)
+  std::string generator;                    // program and version that made it (set by the caller; may be empty)
+  std::string date;                         // when, ISO 8601 UTC (set by the caller; may be empty)
   double diagonal = 0.0;                    // bounding-box diagonal of the model
   double input_diagonal = 0.0;              // of the outermost input surface (0 without surfaces)
   std::vector<std::string> surface_labels;  // input surfaces, outermost first (may be empty)
   std::vector<std::string> material_names;
   std::vector<ElementCertificate> certificates;  // every element of every patch
-  std::string picture_svg;  // the model's labelled boundary for report.html (model_picture.h); may be empty
+  // The model's labelled boundary for report.html (model_picture.h), coloured
+  // by quality (the worst elements marked), by patch and by material; may be empty.
+  std::string picture_svg, picture_by_patch_svg, picture_by_material_svg;
   std::vector<PatchSummary> patches;
   std::vector<ElementCertificate> worst_elements;
   QualityReport quality;

@@ -3,6 +3,7 @@
 // it, from which case and inputs, and when.
 #include <string>
 
+#include "igaprep/iga_check/report.h"
 #include "igaprep/pipeline/case.h"
 #include "igaprep/spline/multipatch.h"
 
@@ -20,5 +21,8 @@ std::string run_date_utc();
 // case file's text, or the built-in case as JSON), inputs (JSON: per surface
 // its label and file with SHA-256, every option's value, the date).
 void fill_provenance(const Case& c, spline::MultiPatch& model);
+
+// Sets the report's generator (generator_name()) and date (run_date_utc()).
+void stamp_report(iga_check::CheckReport& report);
 
 }  // namespace igaprep::pipeline

@@ -24,6 +24,7 @@
 
 #include <Eigen/Core>
 
+#include "igaprep/core/progress.h"
 #include "igaprep/spline/multipatch.h"
 #include "igaprep/spline/side.h"
 
@@ -38,6 +39,9 @@ struct JacobianOptimizationOptions {
   int iterations = 200;  // at most this many L-BFGS iterations of the joint optimization (0: sweeps only)
   int sweeps = 40;       // then at most this many sweeps over the control points (0: none)
   int points = 5;   // sample points per element and direction, ends included (>= 2); 3 let folds through between them
+  // Told each L-BFGS iteration ("Jacobian repair (optimization)", of
+  // `iterations`) and each sweep ("Jacobian repair (sweeps)", of `sweeps`).
+  ProgressCallback progress;
 };
 
 struct JacobianOptimizationResult {

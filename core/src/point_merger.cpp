@@ -1,11 +1,11 @@
-#include "igaprep/param/point_merger.h"
+#include "igaprep/core/point_merger.h"
 
 #include <cmath>
 #include <string>
 
 #include "igaprep/core/error.h"
 
-namespace igaprep::param {
+namespace igaprep {
 
 namespace {
 std::uint64_t hash(const std::array<std::int64_t, 3>& k) {
@@ -43,4 +43,4 @@ std::pair<int, bool> PointMerger::insert(const Eigen::Vector3d& p) {
   return {v, true};
 }
 
-}  // namespace igaprep::param
+}  // namespace igaprep

@@ -10,7 +10,7 @@
 
 #include <Eigen/Core>
 
-namespace igaprep::param {
+namespace igaprep {
 
 class PointMerger {
  public:
@@ -29,4 +29,4 @@ class PointMerger {
   std::unordered_map<std::uint64_t, std::vector<int>> grid_;
 };
 
-}  // namespace igaprep::param
+}  // namespace igaprep

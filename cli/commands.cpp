@@ -18,6 +18,7 @@ void add_run_command(CLI::App& app);
 void add_export_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_solve_command(CLI::App& app);
+void add_tspline_command(CLI::App& app);
 void add_midsurface_command(CLI::App& app);
 void add_reduce_command(CLI::App& app);
 
@@ -79,6 +80,7 @@ void register_commands(CLI::App& app) {
   add_check_command(app);
   add_reduce_command(app);
   add_solve_command(app);
+  add_tspline_command(app);
 }
 
 int run_selected(CLI::App& app) {

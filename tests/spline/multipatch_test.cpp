@@ -7,45 +7,10 @@
 
 using namespace spline_test;
 
-namespace {
-// Patch 0: a distorted box. Patch 1 glued to its u1 face with its own w0 face;
-// a's v runs along b's u reversed, a's w along b's v in the same sense.
-MultiPatch two_patches(std::mt19937& rng) {
-  MultiPatch mp;
-  Patch A = random_patch(rng, {{2, 2, 1}}, {{4, 5, 3}}, true, 1);
-  Patch B;
-  B.degrees = {{A.degrees[1], A.degrees[2], 2}};
-  std::vector<double> ku(A.knots[1].size());
-  for (size_t k = 0; k < ku.size(); ++k) ku[k] = 1.0 - A.knots[1][ku.size() - 1 - k];
-  B.knots = {{ku, A.knots[2], {0, 0, 0, 0.5, 1, 1, 1}}};
-  const int n0 = B.count(0), n1 = B.count(1), n2 = B.count(2);
-  B.control_points.resize(n0 * n1 * n2, 3);
-  B.weights.resize(n0 * n1 * n2);
-  std::uniform_real_distribution<double> J(-0.05, 0.05);
-  for (int k = 0; k < n2; ++k)
-    for (int j = 0; j < n1; ++j)
-      for (int i = 0; i < n0; ++i) {
-        const int a = A.index(A.count(0) - 1, A.count(1) - 1 - i, j);
-        Eigen::RowVector3d x = A.control_points.row(a) + Eigen::RowVector3d(0.4 * k, 0, 0);
-        if (k > 0) x += Eigen::RowVector3d(J(rng), J(rng), J(rng));
-        B.control_points.row(B.index(i, j, k)) = x;
-        B.weights[B.index(i, j, k)] = k == 0 ? A.weights[a] : 1.0 + 0.1 * k;
-      }
-  mp.patches = {A, B};
-  Interface itf;
-  itf.patch_a = 0, itf.side_a = kU1, itf.patch_b = 1, itf.side_b = kW0;
-  itf.dirmap = {{2, 0, 1}};
-  itf.orient = {{1, 0, 1}};
-  mp.interfaces = {itf};
-  mp.labels = {"outer"};
-  mp.materials = {Material{"steel", 210e9, 0.3}};
-  return mp;
-}
-}  // namespace
 
 TEST(SplineMultipatch, ConformingInterfaceIsGeometricallyContinuous) {
   std::mt19937 rng(31);
-  const MultiPatch mp = two_patches(rng);
+  const MultiPatch mp = glued_patches(rng);
   validate_multipatch(mp);
   const ConformityReport rep = check_conformity(mp, 1e-12);
   EXPECT_TRUE(rep.conforming) << (rep.problems.empty() ? "" : rep.problems[0]);
@@ -62,7 +27,7 @@ TEST(SplineMultipatch, ConformingInterfaceIsGeometricallyContinuous) {
 
 TEST(SplineMultipatch, GlobalNumberingCountsSharedPointsOnce) {
   std::mt19937 rng(32);
-  const MultiPatch mp = two_patches(rng);
+  const MultiPatch mp = glued_patches(rng);
   const GlobalNumbering g = global_numbering(mp);
   const int na = static_cast<int>(mp.patches[0].control_points.rows());
   const int nb = static_cast<int>(mp.patches[1].control_points.rows());
@@ -88,7 +53,7 @@ TEST(SplineMultipatch, GlobalNumberingCountsSharedPointsOnce) {
 
 TEST(SplineMultipatch, ConformityCheckNamesShiftedInterfacePoint) {
   std::mt19937 rng(33);
-  MultiPatch mp = two_patches(rng);
+  MultiPatch mp = glued_patches(rng);
   const auto pairs = interface_point_pairs(mp, mp.interfaces[0]);
   const int b = pairs[7].second;
   mp.patches[1].control_points(b, 1) += 1.2e-3;
@@ -105,7 +70,7 @@ TEST(SplineMultipatch, ConformityCheckNamesShiftedInterfacePoint) {
 
 TEST(SplineMultipatch, MismatchedKnotsAndBadInterfacesAreReported) {
   std::mt19937 rng(34);
-  MultiPatch mp = two_patches(rng);
+  MultiPatch mp = glued_patches(rng);
   mp.patches[1].knots[1][2] += 0.01;  // interior knot of b's v (= a's w)
   if (mp.patches[1].knots[1].size() <= 5) {
     // a's w has no interior knot in this set-up; disturb b's u instead.
@@ -115,7 +80,7 @@ TEST(SplineMultipatch, MismatchedKnotsAndBadInterfacesAreReported) {
   ConformityReport rep = check_conformity(mp, 1e-6);
   ASSERT_FALSE(rep.conforming);
   EXPECT_NE(rep.problems[0].find("knot vectors differ after orientation"), std::string::npos) << rep.problems[0];
-  mp = two_patches(rng);
+  mp = glued_patches(rng);
   mp.interfaces[0].dirmap = {{0, 1, 2}};
   EXPECT_THROW(validate_multipatch(mp), igaprep::Error);
   rep = check_conformity(mp, 1e-6);

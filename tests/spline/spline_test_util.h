@@ -93,4 +93,38 @@ inline Eigen::Vector3d random_param(std::mt19937& rng, const Patch& P) {
   return u;
 }
 
+// Patch 0: a distorted box. Patch 1 glued to its u1 face with its own w0 face;
+// a's v runs along b's u reversed, a's w along b's v in the same sense.
+inline MultiPatch glued_patches(std::mt19937& rng) {
+  MultiPatch mp;
+  Patch A = random_patch(rng, {{2, 2, 1}}, {{4, 5, 3}}, true, 1);
+  Patch B;
+  B.degrees = {{A.degrees[1], A.degrees[2], 2}};
+  std::vector<double> ku(A.knots[1].size());
+  for (size_t k = 0; k < ku.size(); ++k) ku[k] = 1.0 - A.knots[1][ku.size() - 1 - k];
+  B.knots = {{ku, A.knots[2], {0, 0, 0, 0.5, 1, 1, 1}}};
+  const int n0 = B.count(0), n1 = B.count(1), n2 = B.count(2);
+  B.control_points.resize(n0 * n1 * n2, 3);
+  B.weights.resize(n0 * n1 * n2);
+  std::uniform_real_distribution<double> J(-0.05, 0.05);
+  for (int k = 0; k < n2; ++k)
+    for (int j = 0; j < n1; ++j)
+      for (int i = 0; i < n0; ++i) {
+        const int a = A.index(A.count(0) - 1, A.count(1) - 1 - i, j);
+        Eigen::RowVector3d x = A.control_points.row(a) + Eigen::RowVector3d(0.4 * k, 0, 0);
+        if (k > 0) x += Eigen::RowVector3d(J(rng), J(rng), J(rng));
+        B.control_points.row(B.index(i, j, k)) = x;
+        B.weights[B.index(i, j, k)] = k == 0 ? A.weights[a] : 1.0 + 0.1 * k;
+      }
+  mp.patches = {A, B};
+  Interface itf;
+  itf.patch_a = 0, itf.side_a = kU1, itf.patch_b = 1, itf.side_b = kW0;
+  itf.dirmap = {{2, 0, 1}};
+  itf.orient = {{1, 0, 1}};
+  mp.interfaces = {itf};
+  mp.labels = {"outer"};
+  mp.materials = {Material{"steel", 210e9, 0.3}};
+  return mp;
+}
+
 }  // namespace spline_test

@@ -1,0 +1,102 @@
+// The Bezier-extraction model file: h5py and an independent evaluator
+// written from docs/hdf5-format.md reproduce the multipatch's geometry.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+
+#include "igaprep/core/error.h"
+#include "igaprep/export/hdf5_extraction.h"
+#include "igaprep/export/hdf5_model.h"
+#include "igaprep/spline/evaluate.h"
+#include "igaprep/spline/extraction_model.h"
+#include "test_model.h"
+#include "test_util.h"
+
+namespace {
+using namespace igaprep::test;
+namespace spline = igaprep::spline;
+
+TEST(Hdf5Extraction, AnIndependentReaderReproducesTheGeometry) {
+  const std::string dir = scratch_dir("hdf5_extraction");
+  const spline::MultiPatch mp = make_test_model();
+  const spline::ExtractionModel m = spline::extraction_model(mp);
+  igaprep::exporter::write_hdf5_extraction(m, dir + "/m.h5");
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<std::array<double, 4>> at;
+  std::ostringstream points;
+  points << "[";
+  for (std::size_t e = 0; e < m.elements.size(); ++e)
+    for (int s = 0; s < 10; ++s) {
+      at.push_back({static_cast<double>(e), unit(rng), unit(rng), unit(rng)});
+      points << (at.size() > 1 ? "," : "") << "[" << e << "," << at.back()[1] << "," << at.back()[2] << ","
+             << at.back()[3] << "]";
+    }
+  points << "]";
+  const CommandResult r = run_python("eval_extraction.py", {dir + "/m.h5", points.str()});
+  ASSERT_EQ(r.status, 0) << r.output.substr(0, 2000);
+  const nlohmann::json j = nlohmann::json::parse(r.output);
+  EXPECT_EQ(j["format"], "igaprep-bezier-extraction");
+  EXPECT_EQ(j["format_version"], 1);
+  EXPECT_EQ(j["functions"].get<int>(), m.function_count());
+  EXPECT_EQ(j["elements"].get<std::size_t>(), m.elements.size());
+  EXPECT_EQ(j["faces"].get<std::size_t>(), m.boundary_faces.size());
+  EXPECT_EQ(j["labels"].get<std::vector<std::string>>(), mp.labels);
+  EXPECT_EQ(j["materials"].size(), mp.materials.size());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    // The printed t has 6 digits: evaluate ours at the same rounded t.
+    const spline::ExtractionElement& el = m.elements[static_cast<std::size_t>(at[i][0])];
+    Eigen::Vector3d xi;
+    for (int d = 0; d < 3; ++d) {
+      std::ostringstream s;
+      s << at[i][static_cast<std::size_t>(d) + 1];
+      xi[d] = el.domain[d][0] + std::stod(s.str()) * (el.domain[d][1] - el.domain[d][0]);
+    }
+    const Eigen::Vector3d x = spline::evaluate_point(mp.patches[static_cast<std::size_t>(el.patch)], xi);
+    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(j["points"][i][c].get<double>() - x[c]));
+  }
+  EXPECT_LT(worst, 1e-12 * 3.0);  // the slab's diagonal is 3
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Hdf5Extraction, AnInconsistentModelIsRefusedAndNothingWritten) {
+  const std::string dir = scratch_dir("hdf5_extraction_bad");
+  spline::ExtractionModel m = spline::extraction_model(make_test_model());
+  m.elements[2].functions.back() = m.function_count();
+  EXPECT_THROW(igaprep::exporter::write_hdf5_extraction(m, dir + "/bad.h5"), igaprep::Error);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/bad.h5"));
+  std::filesystem::remove_all(dir);
+}
+
+// `igaprep tspline MODEL.h5 -o OUT.h5`: the model's extraction form on disk,
+// the counts on stdout; an output that is the input is refused.
+TEST(Hdf5Extraction, TheTsplineCommandConvertsAModelFile) {
+  const std::string dir = scratch_dir("tspline_cli");
+  const spline::MultiPatch mp = make_test_model();
+  igaprep::exporter::write_hdf5_model(mp, dir + "/m.h5");
+  const spline::ExtractionModel m = spline::extraction_model(mp);
+  const CommandResult r = run_command(std::string(IGAPREP_CLI) + " tspline " + dir + "/m.h5 -o " + dir + "/t.h5");
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("tspline: " + std::to_string(m.function_count()) + " functions, " +
+                          std::to_string(m.elements.size()) + " elements"),
+            std::string::npos)
+      << r.output;
+  const CommandResult read = run_python("eval_extraction.py", {dir + "/t.h5", "[[0, 0.5, 0.5, 0.5]]"});
+  ASSERT_EQ(read.status, 0) << read.output;
+  const nlohmann::json j = nlohmann::json::parse(read.output);
+  EXPECT_EQ(j["functions"].get<int>(), m.function_count());
+  const Eigen::Vector3d x = spline::evaluate_element(m, 0, Eigen::Vector3d(0.5, 0.5, 0.5));
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(j["points"][0][c].get<double>(), x[c], 1e-12);
+  const CommandResult same = run_command(std::string(IGAPREP_CLI) + " tspline " + dir + "/m.h5 -o " + dir + "/m.h5 2>&1");
+  EXPECT_EQ(WEXITSTATUS(same.status), 1) << same.output;
+  EXPECT_NE(same.output.find("error: "), std::string::npos) << same.output;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace

@@ -335,18 +335,41 @@ ElementCertificate certify_element(const spline::BezierElement& e, const std::ar
   return cert;
 }
 
+namespace {
+// Degrees the certificate takes: 1 to options.max_degree.
+void check_degrees(const std::array<int, 3>& degrees, const std::string& name, const CertifyOptions& options) {
+  for (int d = 0; d < 3; ++d)
+    if (degrees[d] < 1) throw bad_input(name + ": degree 0 in direction " + std::to_string(d) + " has no Jacobian");
+  for (int d = 0; d < 3; ++d)
+    if (degrees[d] > options.max_degree)
+      throw bad_input(name + ": degree " + std::to_string(degrees[d]) + " in direction " + std::to_string(d) +
+                      " is above the certificate's limit of " + std::to_string(options.max_degree) +
+                      " (CertifyOptions::max_degree): det J would have " +
+                      std::to_string(static_cast<long long>(std::pow(3.0 * degrees[d], 3))) +
+                      " coefficients per element");
+}
+}  // namespace
+
+std::vector<ElementCertificate> certify_extraction_model(const spline::ExtractionModel& m,
+                                                         const CertifyOptions& options) {
+  if (m.weights.size() > 0 && !(m.weights.minCoeff() > 0.0)) throw bad_input("extraction model: a weight is not positive");
+  std::vector<ElementCertificate> out;
+  out.reserve(m.elements.size());
+  Progress progress("certify Jacobians", m.elements.size(), options.progress);
+  for (int e = 0; e < static_cast<int>(m.elements.size()); ++e) {
+    const spline::ExtractionElement& el = m.elements[static_cast<std::size_t>(e)];
+    check_degrees(el.degrees, "element " + std::to_string(e), options);
+    out.push_back(certify_element(spline::bernstein_element(m, e), el.degrees, options, el.patch, el.index));
+    progress.update(static_cast<std::size_t>(e) + 1);
+  }
+  progress.finish();
+  return out;
+}
+
 std::vector<ElementCertificate> certify_patch(const spline::Patch& p, int patch_index,
                                               const CertifyOptions& options) {
   const std::string name = "patch " + std::to_string(patch_index);
-  for (int d = 0; d < 3; ++d)
-    if (p.degrees[d] < 1) throw bad_input(name + ": degree 0 in direction " + std::to_string(d) + " has no Jacobian");
-  for (int d = 0; d < 3; ++d)
-    if (p.degrees[d] > options.max_degree)
-      throw bad_input(name + ": degree " + std::to_string(p.degrees[d]) + " in direction " + std::to_string(d) +
-                      " is above the certificate's limit of " + std::to_string(options.max_degree) +
-                      " (CertifyOptions::max_degree): det J would have " +
-                      std::to_string(static_cast<long long>(std::pow(3.0 * p.degrees[d], 3))) +
-                      " coefficients per element");
+  check_degrees(p.degrees, name, options);
   if (p.rational() && !(p.weights.minCoeff() > 0.0)) throw bad_input(name + ": a weight is not positive");
   const spline::PatchExtraction ex = spline::bezier_extraction(p);
   std::vector<ElementCertificate> out;

@@ -131,6 +131,25 @@ ExtractionModel extraction_model(const MultiPatch& mp) {
   return out;
 }
 
+BezierElement bernstein_element(const ExtractionModel& m, int element) {
+  const ExtractionElement& e = m.elements.at(static_cast<std::size_t>(element));
+  Eigen::MatrixXd H(static_cast<Eigen::Index>(e.functions.size()), 4);
+  for (std::size_t r = 0; r < e.functions.size(); ++r) {
+    const double w = m.weights[e.functions[r]];
+    H.row(static_cast<Eigen::Index>(r)) << w * m.control_points.row(e.functions[r]), w;
+  }
+  const Eigen::MatrixXd Hb = m.C(element).transpose() * H;
+  BezierElement out;
+  if (m.rational()) {
+    out.weights = Hb.col(3);
+    out.points = Hb.leftCols<3>().array().colwise() / out.weights.array();
+  } else {
+    out.points = Hb.leftCols<3>();
+  }
+  out.domain = e.domain;
+  return out;
+}
+
 Eigen::Vector3d evaluate_element(const ExtractionModel& m, int element, const Eigen::Vector3d& t) {
   const ExtractionElement& e = m.elements.at(static_cast<std::size_t>(element));
   std::array<std::vector<double>, 3> B;

@@ -136,3 +136,32 @@ TEST(CheckCommand, ExitCodesAndReport) {
   r = run("check " + dir + "/missing.h5 --report " + dir + "/none");
   EXPECT_EQ(r.code, 1) << r.out;
 }
+
+// Issue 18: `check` on a model in Bezier-extraction form (a T-spline)
+// certifies every Bezier element, with the same verdict as on the
+// multipatch; the other criteria are named as not checked.
+TEST(CheckCommand, CertifiesAModelInExtractionForm) {
+  std::string why;
+  if (!check_command_available(&why)) GTEST_SKIP() << why;
+  const std::string dir = std::string(IGAPREP_BINARY_DIR) + "/test_check_command_extraction";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  exporter::write_hdf5_model(check_test::sphere_shell(0.5, 1.0), dir + "/shell.h5");
+  ASSERT_EQ(run("tspline " + dir + "/shell.h5 -o " + dir + "/shell_t.h5").code, 0);
+  CliRun r = run("check " + dir + "/shell_t.h5 --report " + dir + "/strict");
+  EXPECT_EQ(r.code, 2) << r.out;  // degenerate at the poles
+  EXPECT_NE(r.out.find("FAIL: jacobian: 8 of 8 Bezier elements not certified positive"), std::string::npos) << r.out;
+  r = run("check " + dir + "/shell_t.h5 --report " + dir + "/loose --allow-degenerate");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("PASS: jacobian: all 8 Bezier elements certified"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("not checked on a Bezier-extraction model yet: conformity"), std::string::npos) << r.out;
+  // A folded model fails.
+  auto fold = [](const Eigen::Vector3d& t) { return Eigen::Vector3d(t[0] + 3.0 * t[0] * (1 - t[0]) * t[1], t[1], t[2]); };
+  exporter::write_hdf5_model(check_test::single(spline::refine_uniformly(check_test::bezier_patch(fold, {{2, 2, 2}}), 1)),
+                             dir + "/fold.h5");
+  ASSERT_EQ(run("tspline " + dir + "/fold.h5 -o " + dir + "/fold_t.h5").code, 0);
+  r = run("check " + dir + "/fold_t.h5 --report " + dir + "/fold");
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("FAIL: jacobian: "), std::string::npos) << r.out;
+  std::filesystem::remove_all(dir);
+}

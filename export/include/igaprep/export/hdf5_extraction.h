@@ -14,4 +14,12 @@ namespace igaprep::exporter {
 // or material out of range.
 void write_hdf5_extraction(const spline::ExtractionModel& model, const std::string& path);
 
+// Whether the file is an HDF5 file whose root attribute format says
+// igaprep-bezier-extraction (false for anything else, unreadable included).
+bool is_hdf5_extraction(const std::string& path);
+
+// Reads such a file, checking every count, offset, index and shape; a
+// defect is bad_input naming the file and the dataset.
+spline::ExtractionModel read_hdf5_extraction(const std::string& path);
+
 }  // namespace igaprep::exporter

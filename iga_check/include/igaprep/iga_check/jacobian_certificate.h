@@ -29,6 +29,7 @@
 #include "igaprep/core/progress.h"
 #include "igaprep/iga_check/bernstein3.h"
 #include "igaprep/spline/bezier_extraction.h"
+#include "igaprep/spline/extraction_model.h"
 #include "igaprep/spline/multipatch.h"
 
 namespace igaprep::iga_check {
@@ -90,6 +91,13 @@ ElementCertificate certify_element(const spline::BezierElement& e, const std::ar
 // the patch when a degree is 0 or a weight is not positive.
 std::vector<ElementCertificate> certify_patch(const spline::Patch& p, int patch_index,
                                               const CertifyOptions& options = {});
+
+// Every Bezier element of a model in extraction form (a T-spline), in its
+// order; each certificate names the element's patch and index when it has
+// them. Throws bad_input when a degree is 0 or above the limit, or a weight
+// is not positive.
+std::vector<ElementCertificate> certify_extraction_model(const spline::ExtractionModel& m,
+                                                         const CertifyOptions& options = {});
 
 // All elements of all patches, patch by patch.
 std::vector<ElementCertificate> certify_model(const spline::MultiPatch& mp,

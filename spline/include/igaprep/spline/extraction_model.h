@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "igaprep/spline/bezier_extraction.h"
 #include "igaprep/spline/multipatch.h"
 #include "igaprep/spline/side.h"
 
@@ -62,6 +63,11 @@ struct ExtractionModel {
 // one function with different control points or weights, beyond 1e-12 of
 // the diagonal) or has no patches.
 ExtractionModel extraction_model(const MultiPatch& mp);
+
+// The element as a Bezier element: its Bernstein points C_e^T times its
+// functions' control points in homogeneous coordinates (weights only when
+// the model is rational), and its parameter box.
+BezierElement bernstein_element(const ExtractionModel& m, int element);
 
 // The element's point at Bernstein coordinates t in [0, 1]^3 (rational when
 // the weights are not all 1).

@@ -17,6 +17,8 @@ macro(igaprep_needs dependency result)
 endmacro()
 
 find_dependency(Eigen3 3.3 NO_MODULE)
+# OpenMP (core's parallel_for): CMake's own FindOpenMP, no package to install.
+find_package(OpenMP COMPONENTS CXX QUIET)
 igaprep_needs(cgal _igaprep_need)
 if(_igaprep_need)
   find_dependency(CGAL)

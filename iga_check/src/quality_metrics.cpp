@@ -7,6 +7,7 @@
 #include <string>
 
 #include "igaprep/core/error.h"
+#include "igaprep/core/parallel.h"
 #include "igaprep/spline/evaluate.h"
 #include "igaprep/spline/gauss_legendre.h"
 #include "igaprep/spline/knot_vector.h"
@@ -133,15 +134,17 @@ QualityReport quality_metrics(const spline::MultiPatch& mp, const QualityOptions
   const int bins = options.histogram_bins;
   QualityReport report;
   const size_t np = mp.patches.size();
-  std::vector<PatchSampling> samp;
+  std::vector<PatchSampling> samp(np);
   std::vector<std::array<Accumulator, 3>> acc(np);  // det, scaled, condition
   std::array<Accumulator, 3> all;
-  std::vector<QualityPoint> element_worst;
-  // Pass 1: statistics, scaled-Jacobian histograms (fixed range), worst points.
-  for (size_t pi = 0; pi < np; ++pi) {
+  std::vector<std::vector<QualityPoint>> patch_worst(np);
+  report.patches.resize(np);
+  // Pass 1, patches on all cores (each fills its own slots): statistics,
+  // scaled-Jacobian histograms (fixed range), worst points.
+  parallel_for(np, [&](size_t pi) {
     const spline::Patch& p = mp.patches[pi];
-    samp.push_back(sampling(p, pi, options));
-    const PatchSampling& s = samp.back();
+    samp[pi] = sampling(p, pi, options);
+    const PatchSampling& s = samp[pi];
     acc[pi][1].set_range(-1.0, 1.0, bins);
     std::vector<QualityPoint> worst(static_cast<size_t>(s.ne[0]) * s.ne[1] * s.ne[2]);
     for (auto& q : worst) q.scaled_jacobian = std::numeric_limits<double>::infinity();
@@ -167,9 +170,11 @@ QualityReport quality_metrics(const spline::MultiPatch& mp, const QualityOptions
         q.condition = cn;
       }
     });
-    element_worst.insert(element_worst.end(), worst.begin(), worst.end());
-    report.patches.push_back(pq);
-  }
+    patch_worst[pi] = std::move(worst);
+    report.patches[pi] = pq;
+  });
+  std::vector<QualityPoint> element_worst;
+  for (const auto& w : patch_worst) element_worst.insert(element_worst.end(), w.begin(), w.end());
   // Model-wide ranges of det J and condition, then pass 2 fills their histograms.
   double dlo = std::numeric_limits<double>::infinity(), dhi = -dlo, clo = dlo, chi = -dlo;
   for (const auto& a : acc) {
@@ -181,13 +186,15 @@ QualityReport quality_metrics(const spline::MultiPatch& mp, const QualityOptions
     const auto range = m == 0 ? det_range : m == 1 ? std::make_pair(-1.0, 1.0) : cond_range;
     all[m].set_range(range.first, range.second, bins);
   }
-  for (size_t pi = 0; pi < np; ++pi) {
+  parallel_for(np, [&](size_t pi) {
     acc[pi][0].set_range(det_range.first, det_range.second, bins);
     acc[pi][2].set_range(cond_range.first, cond_range.second, bins);
     for_each_point(mp.patches[pi], samp[pi], [&](const Eigen::Matrix3d& J, int, int, int, const Eigen::RowVector3d&) {
       acc[pi][0].bin(J.determinant());
       acc[pi][2].bin(condition_number(J));
     });
+  });
+  for (size_t pi = 0; pi < np; ++pi) {
     PatchQuality& pq = report.patches[pi];
     pq.det_j = acc[pi][0].stats();
     pq.scaled_jacobian = acc[pi][1].stats();

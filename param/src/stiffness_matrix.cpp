@@ -1,11 +1,11 @@
 #include "igaprep/param/stiffness_matrix.h"
 
 #include <algorithm>
-#include <thread>
 #include <vector>
 
 #include "cell_geometry.h"
 #include "igaprep/core/error.h"
+#include "igaprep/core/parallel.h"
 
 namespace igaprep::param {
 namespace {
@@ -51,9 +51,9 @@ Eigen::SparseMatrix<double> assemble(const Eigen::MatrixXd& V, const Eigen::Matr
   {
     Eigen::Index bad[2] = {-1, -1};
     const Eigen::Index half = m / 2;
-    std::thread worker([&] { bad[1] = local_entries<K>(V, C, half, m, local.data()); });
-    bad[0] = local_entries<K>(V, C, 0, half, local.data());
-    worker.join();
+    parallel_for(2, [&](std::size_t t) {
+      bad[t] = t == 0 ? local_entries<K>(V, C, 0, half, local.data()) : local_entries<K>(V, C, half, m, local.data());
+    });
     for (Eigen::Index b : bad)
       if (b >= 0) detail::throw_degenerate(who, b, K);
   }

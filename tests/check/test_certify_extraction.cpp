@@ -5,6 +5,8 @@
 
 #include "check/check_models.h"
 #include "igaprep/core/error.h"
+#include "igaprep/core/parallel.h"
+#include "igaprep/iga_check/quality_metrics.h"
 #include "igaprep/iga_check/jacobian_certificate.h"
 #include "igaprep/spline/extraction_model.h"
 #include "igaprep/spline/refine.h"
@@ -47,4 +49,33 @@ TEST(CertifyExtraction, DegreeZeroAndBadWeightsAreRefused) {
   EXPECT_THROW(certify_extraction_model(m), igaprep::Error);
 }
 
+}  // namespace
+
+namespace {
+using namespace igaprep::iga_check;
+namespace spline = igaprep::spline;
+
+// Issue 22: the check's per-patch work runs on all cores; one thread or two
+// give the same certificates and quality figures, bit for bit.
+TEST(CheckThreads, OneOrTwoThreadsGiveTheSameReport) {
+  const spline::MultiPatch mp = check_test::sphere_shell(0.5, 1.0);
+  igaprep::set_thread_count(1);
+  const std::vector<ElementCertificate> one = certify_model(mp);
+  const QualityReport q_one = quality_metrics(mp);
+  igaprep::set_thread_count(2);
+  const std::vector<ElementCertificate> two = certify_model(mp);
+  const QualityReport q_two = quality_metrics(mp);
+  igaprep::set_thread_count(0);
+  ASSERT_EQ(one.size(), two.size());
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    EXPECT_EQ(one[i].patch, two[i].patch);
+    EXPECT_EQ(one[i].element, two[i].element);
+    EXPECT_EQ(one[i].lower_bound, two[i].lower_bound);
+    EXPECT_EQ(one[i].upper_bound, two[i].upper_bound);
+  }
+  EXPECT_EQ(q_one.overall.scaled_jacobian.mean, q_two.overall.scaled_jacobian.mean);
+  EXPECT_EQ(q_one.overall.det_j.histogram.counts, q_two.overall.det_j.histogram.counts);
+  ASSERT_EQ(q_one.worst.size(), q_two.worst.size());
+  for (std::size_t i = 0; i < q_one.worst.size(); ++i) EXPECT_EQ(q_one.worst[i].det_j, q_two.worst[i].det_j);
+}
 }  // namespace

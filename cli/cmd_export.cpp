@@ -7,10 +7,27 @@
 
 #include "commands.h"
 #include "igaprep/core/input_files.h"
+#include "igaprep/core/error.h"
 #include "igaprep/export/export_model.h"
+#include "igaprep/export/hdf5_extraction.h"
+#include "igaprep/export/vtu_bezier.h"
 #include "igaprep/export/hdf5_model.h"
 
 namespace igaprep::cli {
+
+namespace {
+// A model in Bezier-extraction form (igaprep tspline): VTU only, so far.
+int export_extraction(const std::string& model, const std::vector<exporter::Format>& formats, const std::string& basename) {
+  for (const exporter::Format f : formats)
+    if (f != exporter::Format::Vtu)
+      throw bad_input("export: '" + model + "' is a Bezier-extraction model; only vtu is written for it so far, not " +
+                      exporter::format_name(f));
+  refuse_replacing_inputs({model}, {basename + ".vtu"});
+  exporter::write_vtu_bezier(exporter::read_hdf5_extraction(model), basename + ".vtu");
+  std::cout << "wrote " << basename << ".vtu\n";
+  return 0;
+}
+}  // namespace
 
 void add_export_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
@@ -24,6 +41,7 @@ void add_export_command(CLI::App& app) {
   set_body(sub, [=] {
     // Formats first: a typo is reported before any file is read or written.
     const std::vector<exporter::Format> list = exporter::parse_formats(*formats);
+    if (exporter::is_hdf5_extraction(*model)) return export_extraction(*model, list, *basename);
     const spline::MultiPatch mp = exporter::read_hdf5_model(*model);
     std::vector<std::string> outputs;
     for (const exporter::Format f : list)

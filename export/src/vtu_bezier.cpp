@@ -23,6 +23,7 @@
 #include "model_checks.h"
 #include "number_text.h"
 #include "vtu_arrays.h"
+#include "vtu_grid.h"
 
 namespace igaprep::exporter {
 
@@ -54,32 +55,8 @@ int vtk_hex_point_index(int i, int j, int k, const std::array<int, 3>& order) {
 }
 
 namespace {
+using detail::Grid;
 
-struct Grid {
-  std::vector<double> points;   // 3 per point
-  std::vector<double> weights;  // 1 per point
-  std::vector<double> displacement, von_mises;
-  std::vector<int64_t> connectivity, offsets;
-  std::vector<int32_t> degrees, material, patch, element;  // degrees, element (i, j, k): 3 per cell
-  std::vector<double> min_scaled_jacobian;                // per cell
-  std::vector<int32_t> point_material, point_patch;       // per point: slices keep them exact (a point shared by patches: the first)
-};
-
-// The smallest scaled Jacobian at the element's (p + 1)^3 equispaced nodes
-// (corners included): a sample, not a bound (igaprep check certifies).
-double element_min_scaled_jacobian(const spline::Patch& p, const std::array<std::array<double, 2>, 3>& domain) {
-  double q = std::numeric_limits<double>::infinity();
-  for (int k = 0; k <= p.degrees[2]; ++k)
-    for (int j = 0; j <= p.degrees[1]; ++j)
-      for (int i = 0; i <= p.degrees[0]; ++i) {
-        const int at[3] = {i, j, k};
-        Eigen::Vector3d xi;
-        for (int d = 0; d < 3; ++d)
-          xi[d] = domain[d][0] + (domain[d][1] - domain[d][0]) * static_cast<double>(at[d]) / p.degrees[d];
-        q = std::min(q, spline::scaled_jacobian(spline::evaluate_jacobian(p, xi)));
-      }
-  return q;
-}
 
 double von_mises(const Eigen::Matrix3d& grad_u, double E, double nu) {
   const Eigen::Matrix3d eps = 0.5 * (grad_u + grad_u.transpose());
@@ -112,11 +89,7 @@ void build_grid(const spline::MultiPatch& model, Grid& g) {
         throw bad_input("VTU Bezier: patch " + std::to_string(pi) + " has degree 0 in direction " +
                         detail::direction_name(d) + " (VTK Bezier cells need degree >= 1)");
     const int nb = (deg[0] + 1) * (deg[1] + 1) * (deg[2] + 1);
-    std::vector<int> vtk_of_local(nb);  // local Bernstein index (u fastest) -> VTK point index
-    for (int k = 0; k <= deg[2]; ++k)
-      for (int j = 0; j <= deg[1]; ++j)
-        for (int i = 0; i <= deg[0]; ++i)
-          vtk_of_local[i + (deg[0] + 1) * (j + (deg[1] + 1) * k)] = vtk_hex_point_index(i, j, k, deg);
+    const std::vector<int> vtk_of_local = detail::vtk_hex_order(deg);
     const spline::PatchExtraction ex = spline::bezier_extraction(p);
     const bool has_u = p.displacement.size() > 0;
     spline::Patch disp;  // the displacement as a patch in the same basis
@@ -160,7 +133,7 @@ void build_grid(const spline::MultiPatch& model, Grid& g) {
           g.material.push_back(p.material);
           g.patch.push_back(static_cast<int32_t>(pi));
           g.element.insert(g.element.end(), {eu, ev, ew});
-          g.min_scaled_jacobian.push_back(element_min_scaled_jacobian(p, be.domain));
+          g.min_scaled_jacobian.push_back(detail::element_min_scaled_jacobian(p, be.domain));
           g.point_material.resize(g.weights.size(), p.material);
           g.point_patch.resize(g.weights.size(), static_cast<int32_t>(pi));
           if (!solution) continue;
@@ -223,50 +196,6 @@ void build_grid(const spline::MultiPatch& model, Grid& g) {
   }
 }
 
-// Points of different cells that coincide (to 1e-10 of the diagonal) with
-// the same weight and material become one point, so VTK sees which faces
-// are shared (Extract Surface gives the boundary and the material
-// interfaces, not every element face). Not for results: von Mises is
-// discontinuous between elements, so each cell keeps its own points then.
-void share_coincident_points(Grid& g) {
-  const std::size_t n = g.weights.size();
-  if (n == 0) return;
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
-  for (std::size_t i = 0; i < n; ++i) {
-    lo = lo.cwiseMin(Eigen::Vector3d(g.points[3 * i], g.points[3 * i + 1], g.points[3 * i + 2]));
-    hi = hi.cwiseMax(Eigen::Vector3d(g.points[3 * i], g.points[3 * i + 1], g.points[3 * i + 2]));
-  }
-  const double tol = 1e-10 * std::max((hi - lo).norm(), 1e-300);
-  struct Shared {
-    PointMerger merger;
-    std::vector<int64_t> point;  // merger vertex -> point of the shared grid
-  };
-  std::map<int32_t, Shared> by_material;
-  std::vector<int64_t> shared_of(n);
-  std::vector<double> points, weights;
-  std::vector<int32_t> material, patch;
-  for (std::size_t i = 0; i < n; ++i) {
-    Shared& s = by_material.try_emplace(g.point_material[i], Shared{PointMerger(tol), {}}).first->second;
-    const auto [vertex, added] = s.merger.insert(Eigen::Vector3d(g.points[3 * i], g.points[3 * i + 1], g.points[3 * i + 2]));
-    if (added) s.point.push_back(static_cast<int64_t>(weights.size()));
-    const int64_t at = s.point[static_cast<std::size_t>(vertex)];
-    if (!added && std::abs(weights[static_cast<std::size_t>(at)] - g.weights[i]) <= 1e-12 * std::abs(g.weights[i])) {
-      shared_of[i] = at;
-      continue;
-    }
-    shared_of[i] = static_cast<int64_t>(weights.size());  // new, or the same place with another weight
-    points.insert(points.end(), {g.points[3 * i], g.points[3 * i + 1], g.points[3 * i + 2]});
-    weights.push_back(g.weights[i]);
-    material.push_back(g.point_material[i]);
-    patch.push_back(g.point_patch[i]);
-  }
-  for (int64_t& c : g.connectivity) c = shared_of[static_cast<std::size_t>(c)];
-  g.points = std::move(points);
-  g.weights = std::move(weights);
-  g.point_material = std::move(material);
-  g.point_patch = std::move(patch);
-}
-
 }  // namespace
 
 void write_vtu_bezier(const spline::MultiPatch& model, std::ostream& out, const VtuOptions& options) {
@@ -274,33 +203,12 @@ void write_vtu_bezier(const spline::MultiPatch& model, std::ostream& out, const 
   Grid g;
   build_grid(model, g);
   const bool solution = !g.von_mises.empty();
-  if (!solution) share_coincident_points(g);
-  const size_t npts = g.weights.size(), ncells = g.offsets.size();
+  if (!solution) detail::share_coincident_points(g);
+  const size_t ncells = g.offsets.size();
   if (!options.certified_lower_bound.empty() && options.certified_lower_bound.size() != ncells)
     throw bad_input("VTU Bezier: " + std::to_string(options.certified_lower_bound.size()) +
                     " certified bounds for " + std::to_string(ncells) + " elements");
-  std::vector<uint8_t> types(ncells, 79);  // VTK_BEZIER_HEXAHEDRON
-
-  detail::vtu_header(out, npts, ncells);
-  detail::ArrayWriter w(out, options.binary);
-  out << "   <PointData RationalWeights=\"RationalWeights\">\n";
-  w.array("Float64", "RationalWeights", 1, g.weights, "    ");
-  w.array("Int32", "material", 1, g.point_material, "    ");
-  w.array("Int32", "patch", 1, g.point_patch, "    ");
-  if (solution) {
-    w.array("Float64", "displacement", 3, g.displacement, "    ");
-    w.array("Float64", "von_mises", 1, g.von_mises, "    ");
-  }
-  out << "   </PointData>\n";
-  out << "   <CellData HigherOrderDegrees=\"HigherOrderDegrees\">\n";
-  w.array("Int32", "HigherOrderDegrees", 3, g.degrees, "    ");
-  w.array("Int32", "material", 1, g.material, "    ");
-  w.array("Int32", "patch", 1, g.patch, "    ");
-  w.array("Int32", "element", 3, g.element, "    ");
-  w.array("Float64", "min_scaled_jacobian", 1, g.min_scaled_jacobian, "    ");
-  if (!options.certified_lower_bound.empty())
-    w.array("Float64", "certified_det_lower_bound", 1, options.certified_lower_bound, "    ");
-  detail::vtu_points_cells_and_end(out, w, g.points, g.connectivity, g.offsets, types);
+  detail::write_grid(out, g, options);
 }
 
 void write_vtu_bezier(const spline::MultiPatch& model, const std::string& path, const VtuOptions& options) {

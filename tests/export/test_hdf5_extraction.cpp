@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <random>
 #include <sstream>
@@ -12,6 +13,7 @@
 #include "igaprep/core/error.h"
 #include "igaprep/export/hdf5_extraction.h"
 #include "igaprep/export/hdf5_model.h"
+#include "igaprep/export/vtu_bezier.h"
 #include "igaprep/spline/evaluate.h"
 #include "igaprep/spline/extraction_model.h"
 #include "test_model.h"
@@ -123,6 +125,42 @@ TEST(Hdf5Extraction, ReadBackEqualsWhatWasWritten) {
       EXPECT_NE(std::string(e.what()).find(dataset), std::string::npos) << change << ": " << e.what();
     }
   }
+  std::filesystem::remove_all(dir);
+}
+
+// The extraction model as VTU (issue 18): VTK reads the same points and
+// cells as from the multipatch's VTU; `export` writes it from the file.
+TEST(Hdf5Extraction, ItsVtuHasTheMultipatchsCellsAndPoints) {
+  const std::string dir = scratch_dir("extraction_vtu");
+  spline::MultiPatch mp = make_test_model();
+  for (auto& p : mp.patches) p.displacement.resize(0, 0);
+  mp.has_solution = false;
+  igaprep::exporter::write_vtu_bezier(mp, dir + "/m.vtu");
+  igaprep::exporter::write_hdf5_extraction(spline::extraction_model(mp), dir + "/t.h5");
+  const CommandResult r = run_command(std::string(IGAPREP_CLI) + " export " + dir + "/t.h5 --to vtu -o " + dir + "/t 2>&1");
+  ASSERT_EQ(r.status, 0) << r.output;
+  const CommandResult bad = run_command(std::string(IGAPREP_CLI) + " export " + dir + "/t.h5 --to bext -o " + dir + "/t 2>&1");
+  EXPECT_EQ(WEXITSTATUS(bad.status), 1) << bad.output;
+  const std::string script =
+      "import vtk, numpy as np\n"
+      "from vtk.util.numpy_support import vtk_to_numpy\n"
+      "def read(f):\n"
+      "  r = vtk.vtkXMLUnstructuredGridReader(); r.SetFileName(f); r.Update(); g = r.GetOutput()\n"
+      "  return g.GetNumberOfCells(), np.array(sorted(map(tuple, np.round(vtk_to_numpy(g.GetPoints().GetData()), 9))))\n"
+      "a, pa = read('" + dir + "/m.vtu'); b, pb = read('" + dir + "/t.vtu')\n"
+      "print(a, b, len(pa), len(pb), np.abs(pa - pb).max() if len(pa) == len(pb) else -1)\n";
+  std::ofstream(dir + "/cmp.py") << script;
+  const CommandResult py = run_command(std::string(IGAPREP_PYTHON) + " " + dir + "/cmp.py");
+  ASSERT_EQ(py.status, 0) << py.output;
+  std::istringstream in(py.output);
+  long cells_m = 0, cells_t = 0, points_m = 0, points_t = 0;
+  double gap = -1;
+  in >> cells_m >> cells_t >> points_m >> points_t >> gap;
+  EXPECT_EQ(cells_t, cells_m);
+  EXPECT_GT(cells_m, 0);
+  EXPECT_EQ(points_t, points_m);
+  EXPECT_GE(gap, 0.0);
+  EXPECT_LT(gap, 1e-8);
   std::filesystem::remove_all(dir);
 }
 

@@ -4,7 +4,8 @@
 // ParaView and VTK >= 9. Points are the element's Bernstein control points
 // from the spline module's Bezier extraction, in the order of
 // vtkHigherOrderHexahedron::PointIndexFromIJK (corners, edges, faces,
-// interior). Points are not shared between cells.
+// interior). A model's points are shared between cells where they coincide
+// within a material (a solve result's are not: its stress is discontinuous).
 //
 // Data arrays:
 //  - point data "RationalWeights" (named in <PointData RationalWeights=...>),
@@ -29,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "igaprep/spline/extraction_model.h"
 #include "igaprep/spline/multipatch.h"
 
 namespace igaprep::exporter {
@@ -46,6 +48,11 @@ struct VtuOptions {
 void write_vtu_bezier(const spline::MultiPatch& model, std::ostream& out, const VtuOptions& options = {});
 void write_vtu_bezier(const spline::MultiPatch& model, const std::string& path,
                       const VtuOptions& options = {});  // atomic
+
+// The same for a model in Bezier-extraction form (a T-spline): one cell per
+// element from spline::bernstein_element, cell data "patch" and "element"
+// from the element's provenance (-1 and 0 when it has none).
+void write_vtu_bezier(const spline::ExtractionModel& model, const std::string& path);  // atomic
 
 // VTK's point index of Bernstein node (i, j, k) of a hexahedron of the given
 // degrees (vtkHigherOrderHexahedron::PointIndexFromIJK, VTK 9 numbering).

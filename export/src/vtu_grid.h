@@ -1,0 +1,45 @@
+#pragma once
+// Private to export/: the arrays of a VTU of Bezier hexahedra before they are
+// written (vtu_bezier.cpp for patches, vtu_extraction.cpp for extraction
+// models), and the merging of coincident points.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <ostream>
+
+#include "igaprep/export/vtu_bezier.h"
+#include "igaprep/spline/multipatch.h"
+
+namespace igaprep::exporter::detail {
+
+struct Grid {
+  std::vector<double> points;   // 3 per point
+  std::vector<double> weights;  // 1 per point
+  std::vector<double> displacement, von_mises;
+  std::vector<int64_t> connectivity, offsets;
+  std::vector<int32_t> degrees, material, patch, element;  // degrees, element (i, j, k): 3 per cell
+  std::vector<double> min_scaled_jacobian;                // per cell
+  std::vector<int32_t> point_material, point_patch;       // per point: slices keep them exact (a point shared by patches: the first)
+};
+
+// Points of different cells that coincide (to 1e-10 of the diagonal) with
+// the same weight and material become one point, so VTK sees which faces
+// are shared (Extract Surface gives the boundary and the material
+// interfaces, not every element face). Not for results: von Mises is
+// discontinuous between elements, so each cell keeps its own points then.
+void share_coincident_points(Grid& g);
+
+// Local Bernstein index (u fastest) -> VTK point index of a Bezier hexahedron.
+std::vector<int> vtk_hex_order(const std::array<int, 3>& degrees);
+
+// The VTU file of the grid: points, cells, the arrays (the displacement and
+// von Mises when the grid has them; options' certified bounds when given).
+void write_grid(std::ostream& out, const Grid& g, const VtuOptions& options);
+
+// The smallest scaled Jacobian at the element's (p + 1)^3 equispaced nodes
+// (corners included) over the parameter box `domain` of the patch: a sample,
+// not a bound (igaprep check certifies).
+double element_min_scaled_jacobian(const spline::Patch& p, const std::array<std::array<double, 2>, 3>& domain);
+
+}  // namespace igaprep::exporter::detail

@@ -5,6 +5,7 @@
 #include <thread>
 #include <vector>
 
+#include "igaprep/core/parallel.h"
 #include "igaprep/iga_check/elasticity_solve.h"
 #include "solve_models.h"
 
@@ -37,4 +38,18 @@ TEST(SolveThreads, ConcurrentSolvesMatchSolvesAlone) {
     for (size_t p = 0; p < alone[k].model.patches.size(); ++p)
       EXPECT_TRUE(together[k].model.patches[p].displacement == alone[k].model.patches[p].displacement) << k << " " << p;
   }
+}
+
+// Issue 22: the element matrices are computed on all cores and added in
+// element order, so one thread or two give the same solve bit for bit.
+TEST(SolveThreads, OneOrTwoAssemblyThreadsGiveTheSameSolve) {
+  igaprep::set_thread_count(1);
+  const iga_check::ElasticitySolution one = solve(5);
+  igaprep::set_thread_count(2);
+  const iga_check::ElasticitySolution two = solve(5);
+  igaprep::set_thread_count(0);
+  EXPECT_EQ(one.report.strain_energy, two.report.strain_energy);
+  ASSERT_EQ(one.model.patches.size(), two.model.patches.size());
+  for (std::size_t p = 0; p < one.model.patches.size(); ++p)
+    EXPECT_EQ(one.model.patches[p].displacement, two.model.patches[p].displacement);
 }

@@ -6,6 +6,7 @@
 
 #include "igaprep/core/error.h"
 #include "igaprep/iga_check/fidelity.h"
+#include "igaprep/core/parallel.h"
 #include "igaprep/mesh/enclosed_volume.h"
 #include "igaprep/spline/curve_surface.h"
 #include "igaprep/spline/evaluate.h"
@@ -141,11 +142,12 @@ TopologyReport topology_checks(const spline::MultiPatch& mp, const std::vector<m
       r.sides.push_back(st);
     }
 
-  // Volumes.
+  // Volumes: the patches' on all cores, summed in patch order.
   r.material_volumes.assign(std::max<size_t>(mp.materials.size(), 1), 0.0);
+  r.patch_volumes.assign(static_cast<size_t>(np), 0.0);
+  parallel_for(static_cast<size_t>(np), [&](size_t p) { r.patch_volumes[p] = patch_volume(mp.patches[p]); });
   for (int p = 0; p < np; ++p) {
-    const double v = patch_volume(mp.patches[p]);
-    r.patch_volumes.push_back(v);
+    const double v = r.patch_volumes[static_cast<size_t>(p)];
     const int m = mp.patches[p].material;
     if (m >= 0) {
       if (m >= static_cast<int>(r.material_volumes.size())) r.material_volumes.resize(m + 1, 0.0);

@@ -7,6 +7,7 @@
 #include "igaprep/core/error.h"
 #include "igaprep/core/parallel.h"
 #include "igaprep/iga_check/quality_metrics.h"
+#include "igaprep/iga_check/topology_checks.h"
 #include "igaprep/iga_check/jacobian_certificate.h"
 #include "igaprep/spline/extraction_model.h"
 #include "igaprep/spline/refine.h"
@@ -62,9 +63,11 @@ TEST(CheckThreads, OneOrTwoThreadsGiveTheSameReport) {
   igaprep::set_thread_count(1);
   const std::vector<ElementCertificate> one = certify_model(mp);
   const QualityReport q_one = quality_metrics(mp);
+  const TopologyReport t_one = topology_checks(mp, {}, 1.0, 1e-9);
   igaprep::set_thread_count(2);
   const std::vector<ElementCertificate> two = certify_model(mp);
   const QualityReport q_two = quality_metrics(mp);
+  const TopologyReport t_two = topology_checks(mp, {}, 1.0, 1e-9);
   igaprep::set_thread_count(0);
   ASSERT_EQ(one.size(), two.size());
   for (std::size_t i = 0; i < one.size(); ++i) {
@@ -74,6 +77,9 @@ TEST(CheckThreads, OneOrTwoThreadsGiveTheSameReport) {
     EXPECT_EQ(one[i].upper_bound, two[i].upper_bound);
   }
   EXPECT_EQ(q_one.overall.scaled_jacobian.mean, q_two.overall.scaled_jacobian.mean);
+  EXPECT_EQ(t_one.patch_volumes, t_two.patch_volumes);
+  EXPECT_EQ(t_one.material_volumes, t_two.material_volumes);
+  EXPECT_GT(t_one.material_volumes[0], 0.0);
   EXPECT_EQ(q_one.overall.det_j.histogram.counts, q_two.overall.det_j.histogram.counts);
   ASSERT_EQ(q_one.worst.size(), q_two.worst.size());
   for (std::size_t i = 0; i < q_one.worst.size(); ++i) EXPECT_EQ(q_one.worst[i].det_j, q_two.worst[i].det_j);

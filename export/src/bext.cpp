@@ -6,12 +6,10 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <map>
 #include <numeric>
 #include <vector>
 
-#include "igaprep/core/atomic_file.h"
 #include "igaprep/core/error.h"
 #include "igaprep/spline/bezier_extraction.h"
 #include "bext_parts.h"
@@ -112,7 +110,7 @@ void write_bext_part(const spline::MultiPatch& model, int material, std::ostream
   for (std::size_t b = 1; b < blocks.size(); ++b)
     first_id[b] = first_id[b - 1] + static_cast<long long>(blocks[b - 1].vectors.size());
   long long num_elements = 0, num_vectors = 0;
-  for (auto& patch_elements_ : elements) num_elements += static_cast<long long>(patch_elements_.size());
+  for (const std::vector<Element>& block : elements) num_elements += static_cast<long long>(block.size());
   for (const DenseBlock& b : blocks) num_vectors += static_cast<long long>(b.vectors.size());
 
   const spline::Material& mat = model.materials[static_cast<std::size_t>(material)];
@@ -120,7 +118,7 @@ void write_bext_part(const spline::MultiPatch& model, int material, std::ostream
   out << "$# igaprep: part " << part.pid << ", material '" << mat.name << "', " << part.patches.size()
       << " patches (element block b = the part's b-th patch, elements u fastest)\n";
   out << "$#   pid      nn      ne     ncv     wfl\n";
-  out << integer(part.pid) << integer(static_cast<long long>(part.global_nodes.size())) << integer(num_elements)
+  out << integer(part.pid) << integer(static_cast<long long>(part.node_source.size())) << integer(num_elements)
       << integer(num_vectors) << integer(1) << "\n";
   out << "$#                    Xi                      Yi                      Zi                      Wi\n";
   for (const auto& [p, l] : part.node_source) {
@@ -154,16 +152,6 @@ void write_bext_part(const spline::MultiPatch& model, int material, std::ostream
     for (const std::vector<double>& v : b.vectors)
       for (std::size_t c = 0; c < v.size(); ++c) out << real(v[c]) << ((c + 1) % 5 == 0 || c + 1 == v.size() ? "\n" : "");
   out << "$#END FILE\n";
-}
-
-void write_bext(const spline::MultiPatch& model, const std::string& basename) {
-  detail::check_model_for_writing(model, "'" + basename + "'");
-  const std::vector<std::string> paths = bext_paths(basename, static_cast<int>(model.materials.size()));
-  std::vector<std::string> names;
-  for (std::size_t i = 1; i < paths.size(); ++i) names.push_back(std::filesystem::path(paths[i]).filename().string());
-  for (std::size_t i = 1; i < paths.size(); ++i)
-    write_file_atomically(paths[i], [&](std::ostream& out) { write_bext_part(model, static_cast<int>(i) - 1, out); });
-  write_file_atomically(paths[0], [&](std::ostream& out) { write_lsdyna_deck(model, names, out); });
 }
 
 }  // namespace igaprep::exporter

@@ -24,9 +24,8 @@ std::vector<BextPart> bext_parts(const spline::MultiPatch& model) {
       const int g = numbering.global[p][l];
       long long& id = node_of_global[m][static_cast<std::size_t>(g)];
       if (id == 0) {
-        part.global_nodes.push_back(g);
         part.node_source.emplace_back(static_cast<int>(p), static_cast<int>(l));
-        id = static_cast<long long>(part.global_nodes.size());
+        id = static_cast<long long>(part.node_source.size());
       }
       nodes.push_back(id);
     }

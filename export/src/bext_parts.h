@@ -13,7 +13,6 @@ struct BextPart {
   int material = 0;
   int pid = 0;                    // LS-DYNA part id: material + 1
   std::vector<int> patches;       // in model order
-  std::vector<int> global_nodes;  // part node (0-based) -> global control point (spline::global_numbering)
   std::vector<std::pair<int, int>> node_source;  // part node (0-based) -> (patch, local control point) first using it
   // Per patch of `patches`, per local control point: the part node, 1-based.
   std::vector<std::vector<long long>> node_of;

@@ -13,6 +13,7 @@
 
 #include "hdf5_handle.h"
 #include "igaprep/core/error.h"
+#include "igaprep/core/input_files.h"
 #include "igaprep/spline/multipatch.h"
 
 namespace igaprep::exporter::detail {
@@ -230,6 +231,17 @@ class Hdf5Reader {
   std::string path_;
   H5Handle file_;
 };
+
+// Opens the model file at `path` (a regular file, HDF5's own error printing
+// off) and returns read(reader).
+template <class Read>
+auto read_model_file(const std::string& path, Read read) {
+  require_regular_file(path, "model file");
+  SilenceHdf5Errors quiet;
+  Hdf5Reader r(path);
+  r.open();
+  return read(r);
+}
 
 // The root attributes format (== `format`) and format_version (== 1).
 void expect_format(const Hdf5Reader& r, const std::string& format);

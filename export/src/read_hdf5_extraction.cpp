@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "hdf5_reader.h"
-#include "igaprep/core/input_files.h"
 #include "igaprep/export/hdf5_extraction.h"
 
 namespace igaprep::exporter {
@@ -15,22 +14,24 @@ using detail::H5Handle;
 using Reader = detail::Hdf5Reader;
 
 // A dataset of exactly `shape` (0 in shape: any length there).
-std::vector<long long> ints(const Reader& r, hid_t loc, const std::string& name, const std::string& full,
-                            std::vector<hsize_t> shape) {
-  std::vector<hsize_t> dims;
-  std::vector<long long> v = r.read_ints(loc, name, full, &dims);
+void expect_shape(const Reader& r, const std::vector<hsize_t>& dims, const std::vector<hsize_t>& shape,
+                  const std::string& full) {
   bool ok = dims.size() == shape.size();
   for (std::size_t d = 0; ok && d < dims.size(); ++d) ok = shape[d] == 0 || dims[d] == shape[d];
   if (!ok) r.bad("dataset " + full, "shape " + Reader::shape_text(dims) + ", expected " + Reader::shape_text(shape));
+}
+std::vector<long long> ints(const Reader& r, hid_t loc, const std::string& name, const std::string& full,
+                            const std::vector<hsize_t>& shape) {
+  std::vector<hsize_t> dims;
+  std::vector<long long> v = r.read_ints(loc, name, full, &dims);
+  expect_shape(r, dims, shape, full);
   return v;
 }
 std::vector<double> doubles(const Reader& r, hid_t loc, const std::string& name, const std::string& full,
-                            std::vector<hsize_t> shape) {
+                            const std::vector<hsize_t>& shape) {
   std::vector<hsize_t> dims;
   std::vector<double> v = r.read_doubles(loc, name, full, &dims);
-  bool ok = dims.size() == shape.size();
-  for (std::size_t d = 0; ok && d < dims.size(); ++d) ok = shape[d] == 0 || dims[d] == shape[d];
-  if (!ok) r.bad("dataset " + full, "shape " + Reader::shape_text(dims) + ", expected " + Reader::shape_text(shape));
+  expect_shape(r, dims, shape, full);
   return v;
 }
 
@@ -141,23 +142,16 @@ spline::ExtractionModel read_model(const Reader& r) {
 }  // namespace
 
 bool is_hdf5_extraction(const std::string& path) {
-  detail::SilenceHdf5Errors quiet;
   try {
-    Reader r(path);
-    r.open();
-    return r.has_attribute(r.root(), "format") &&
-           r.string_scalar(r.root(), "format", "/format") == "igaprep-bezier-extraction";
+    return detail::read_model_file(path, [](const Reader& r) {
+      return r.has_attribute(r.root(), "format") &&
+             r.string_scalar(r.root(), "format", "/format") == "igaprep-bezier-extraction";
+    });
   } catch (const Error&) {
     return false;
   }
 }
 
-spline::ExtractionModel read_hdf5_extraction(const std::string& path) {
-  require_regular_file(path, "model file");
-  detail::SilenceHdf5Errors quiet;
-  Reader r(path);
-  r.open();
-  return read_model(r);
-}
+spline::ExtractionModel read_hdf5_extraction(const std::string& path) { return detail::read_model_file(path, read_model); }
 
 }  // namespace igaprep::exporter

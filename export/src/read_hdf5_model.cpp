@@ -10,7 +10,6 @@
 
 #include "hdf5_reader.h"
 #include "igaprep/core/error.h"
-#include "igaprep/core/input_files.h"
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/spline/knot_vector.h"
 #include "model_checks.h"
@@ -179,12 +178,6 @@ spline::MultiPatch read_model(Reader& r) {
 }
 }  // namespace
 
-spline::MultiPatch read_hdf5_model(const std::string& path) {
-  require_regular_file(path, "model file");
-  detail::SilenceHdf5Errors quiet;
-  Reader r(path);
-  r.open();
-  return read_model(r);
-}
+spline::MultiPatch read_hdf5_model(const std::string& path) { return detail::read_model_file(path, read_model); }
 
 }  // namespace igaprep::exporter

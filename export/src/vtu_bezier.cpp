@@ -9,17 +9,13 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <limits>
-#include <map>
 #include <vector>
 
 #include "igaprep/core/atomic_file.h"
 #include "igaprep/core/error.h"
-#include "igaprep/core/point_merger.h"
 #include "igaprep/spline/basis.h"
 #include "igaprep/spline/bezier_extraction.h"
 #include "igaprep/spline/evaluate.h"
-#include "igaprep/spline/scaled_jacobian.h"
 #include "model_checks.h"
 #include "number_text.h"
 #include "vtu_arrays.h"
@@ -108,34 +104,18 @@ void build_grid(const spline::MultiPatch& model, Grid& g) {
           // gives the same but rebuilds the patch's homogeneous points per call.
           const Eigen::MatrixXd C = spline::element_extraction_operator(ex, eu, ev, ew);
           const std::vector<int> local = spline::element_control_points(p, ex, eu, ev, ew);
-          Eigen::MatrixXd hp(local.size(), 4);
+          Eigen::MatrixXd hp(local.size(), p.rational() ? 4 : 3);
           for (size_t r = 0; r < local.size(); ++r) {
-            const double w = p.rational() ? p.weights[local[r]] : 1.0;
-            hp.row(r) << p.control_points.row(local[r]) * w, w;
+            if (p.rational())
+              hp.row(r) << p.control_points.row(local[r]) * p.weights[local[r]], p.weights[local[r]];
+            else
+              hp.row(r) = p.control_points.row(local[r]);
           }
-          const Eigen::MatrixXd hb = C.transpose() * hp;
-          spline::BezierElement be;
-          be.points = hb.leftCols<3>().array().colwise() / hb.col(3).array();
-          if (p.rational()) be.weights = hb.col(3);
+          spline::BezierElement be = spline::bezier_element_from(C, hp);
           const int el[3] = {eu, ev, ew};
           for (int d = 0; d < 3; ++d) be.domain[d] = {{ex.dirs[d].breaks[el[d]], ex.dirs[d].breaks[el[d] + 1]}};
-          const int64_t base = static_cast<int64_t>(g.weights.size());
-          g.points.resize(g.points.size() + 3 * nb);
-          g.weights.resize(g.weights.size() + nb);
-          for (int b = 0; b < nb; ++b) {
-            const int64_t at = base + vtk_of_local[b];
-            for (int c = 0; c < 3; ++c) g.points[3 * at + c] = be.points(b, c);
-            g.weights[at] = p.rational() ? be.weights[b] : 1.0;
-          }
-          for (int b = 0; b < nb; ++b) g.connectivity.push_back(base + b);
-          g.offsets.push_back(static_cast<int64_t>(g.connectivity.size()));
-          g.degrees.insert(g.degrees.end(), {deg[0], deg[1], deg[2]});
-          g.material.push_back(p.material);
-          g.patch.push_back(static_cast<int32_t>(pi));
-          g.element.insert(g.element.end(), {eu, ev, ew});
-          g.min_scaled_jacobian.push_back(detail::element_min_scaled_jacobian(p, be.domain));
-          g.point_material.resize(g.weights.size(), p.material);
-          g.point_patch.resize(g.weights.size(), static_cast<int32_t>(pi));
+          const int64_t base = detail::add_cell(g, be, vtk_of_local, deg, p.material, static_cast<int>(pi), {{eu, ev, ew}},
+                                                detail::element_min_scaled_jacobian(p, be.domain));
           if (!solution) continue;
           g.displacement.resize(g.displacement.size() + 3 * nb, 0.0);
           g.von_mises.resize(g.von_mises.size() + nb, 0.0);

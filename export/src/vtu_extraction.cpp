@@ -1,8 +1,6 @@
 // VTU of a model in Bezier-extraction form: each element's Bernstein points
 // (spline::bernstein_element) as a Bezier hexahedron; the arrays and their
 // layout are those of the multipatch VTU (vtu_grid.h, vtu_arrays.h).
-#include <cstdint>
-
 #include "igaprep/core/atomic_file.h"
 #include "igaprep/core/error.h"
 #include "igaprep/export/vtu_bezier.h"
@@ -33,26 +31,9 @@ detail::Grid extraction_grid(const spline::ExtractionModel& m) {
       if (el.degrees[static_cast<std::size_t>(d)] < 1)
         throw bad_input("VTU Bezier: element " + std::to_string(e) + " has degree 0 (VTK Bezier cells need degree >= 1)");
     const spline::BezierElement be = spline::bernstein_element(m, e);
-    const std::vector<int> vtk_of_local = detail::vtk_hex_order(el.degrees);
-    const auto nb = static_cast<int64_t>(vtk_of_local.size());
-    const auto base = static_cast<int64_t>(g.weights.size());
-    g.points.resize(g.points.size() + 3 * static_cast<std::size_t>(nb));
-    g.weights.resize(g.weights.size() + static_cast<std::size_t>(nb));
-    for (int64_t b = 0; b < nb; ++b) {
-      const auto at = static_cast<std::size_t>(base + vtk_of_local[static_cast<std::size_t>(b)]);
-      for (int c = 0; c < 3; ++c) g.points[3 * at + static_cast<std::size_t>(c)] = be.points(b, c);
-      g.weights[at] = be.weights.size() > 0 ? be.weights[b] : 1.0;
-    }
-    for (int64_t b = 0; b < nb; ++b) g.connectivity.push_back(base + b);
-    g.offsets.push_back(static_cast<int64_t>(g.connectivity.size()));
-    g.degrees.insert(g.degrees.end(), el.degrees.begin(), el.degrees.end());
-    g.material.push_back(el.material);
-    g.patch.push_back(el.patch);
-    g.element.insert(g.element.end(), el.index.begin(), el.index.end());
     const std::array<std::array<double, 2>, 3> unit{{{{0.0, 1.0}}, {{0.0, 1.0}}, {{0.0, 1.0}}}};
-    g.min_scaled_jacobian.push_back(detail::element_min_scaled_jacobian(bezier_patch(be, el.degrees), unit));
-    g.point_material.resize(g.weights.size(), el.material);
-    g.point_patch.resize(g.weights.size(), el.patch);
+    detail::add_cell(g, be, detail::vtk_hex_order(el.degrees), el.degrees, el.material, el.patch, el.index,
+                     detail::element_min_scaled_jacobian(bezier_patch(be, el.degrees), unit));
   }
   detail::share_coincident_points(g);
   return g;

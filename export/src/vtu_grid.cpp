@@ -53,6 +53,30 @@ void share_coincident_points(Grid& g) {
   g.point_patch = std::move(patch);
 }
 
+int64_t add_cell(Grid& g, const spline::BezierElement& be, const std::vector<int>& vtk_of_local,
+                 const std::array<int, 3>& degrees, int material, int patch, const std::array<int, 3>& index,
+                 double min_scaled_jacobian) {
+  const auto nb = static_cast<int64_t>(vtk_of_local.size());
+  const auto base = static_cast<int64_t>(g.weights.size());
+  g.points.resize(g.points.size() + 3 * static_cast<std::size_t>(nb));
+  g.weights.resize(g.weights.size() + static_cast<std::size_t>(nb));
+  for (int64_t b = 0; b < nb; ++b) {
+    const auto at = static_cast<std::size_t>(base + vtk_of_local[static_cast<std::size_t>(b)]);
+    for (int c = 0; c < 3; ++c) g.points[3 * at + static_cast<std::size_t>(c)] = be.points(b, c);
+    g.weights[at] = be.weights.size() > 0 ? be.weights[b] : 1.0;
+  }
+  for (int64_t b = 0; b < nb; ++b) g.connectivity.push_back(base + b);
+  g.offsets.push_back(static_cast<int64_t>(g.connectivity.size()));
+  g.degrees.insert(g.degrees.end(), degrees.begin(), degrees.end());
+  g.material.push_back(material);
+  g.patch.push_back(patch);
+  g.element.insert(g.element.end(), index.begin(), index.end());
+  g.min_scaled_jacobian.push_back(min_scaled_jacobian);
+  g.point_material.resize(g.weights.size(), material);
+  g.point_patch.resize(g.weights.size(), patch);
+  return base;
+}
+
 std::vector<int> vtk_hex_order(const std::array<int, 3>& deg) {
   std::vector<int> out(static_cast<std::size_t>((deg[0] + 1) * (deg[1] + 1) * (deg[2] + 1)));
   for (int k = 0; k <= deg[2]; ++k)

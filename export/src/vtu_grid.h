@@ -9,6 +9,7 @@
 #include <ostream>
 
 #include "igaprep/export/vtu_bezier.h"
+#include "igaprep/spline/bezier_extraction.h"
 #include "igaprep/spline/multipatch.h"
 
 namespace igaprep::exporter::detail {
@@ -32,6 +33,13 @@ void share_coincident_points(Grid& g);
 
 // Local Bernstein index (u fastest) -> VTK point index of a Bezier hexahedron.
 std::vector<int> vtk_hex_order(const std::array<int, 3>& degrees);
+
+// Appends one Bezier hexahedron: its Bernstein points (weights 1 when it
+// has none) in VTK's order (vtk_hex_order of its degrees), its cell data
+// and its points' material and patch. Returns the index of its first point.
+int64_t add_cell(Grid& g, const spline::BezierElement& be, const std::vector<int>& vtk_of_local,
+                 const std::array<int, 3>& degrees, int material, int patch, const std::array<int, 3>& index,
+                 double min_scaled_jacobian);
 
 // The VTU file of the grid: points, cells, the arrays (the displacement and
 // von Mises when the grid has them; options' certified bounds when given).

@@ -85,19 +85,24 @@ std::vector<int> element_control_points(const Patch& p, const PatchExtraction& e
   return idx;
 }
 
-BezierElement bernstein_control_points(const Patch& p, const PatchExtraction& ex, int eu, int ev, int ew) {
-  const std::vector<int> idx = element_control_points(p, ex, eu, ev, ew);
-  const Eigen::MatrixXd H = detail::homogeneous_points(p);
-  Eigen::MatrixXd local(static_cast<long>(idx.size()), H.cols());
-  for (size_t i = 0; i < idx.size(); ++i) local.row(i) = H.row(idx[i]);
-  const Eigen::MatrixXd Hb = element_extraction_operator(ex, eu, ev, ew).transpose() * local;
+BezierElement bezier_element_from(const Eigen::MatrixXd& C, const Eigen::MatrixXd& H) {
+  const Eigen::MatrixXd Hb = C.transpose() * H;
   BezierElement e;
-  if (p.rational()) {
+  if (H.cols() == 4) {
     e.weights = Hb.col(3);
     e.points = Hb.leftCols<3>().array().colwise() / e.weights.array();
   } else {
     e.points = Hb;
   }
+  return e;
+}
+
+BezierElement bernstein_control_points(const Patch& p, const PatchExtraction& ex, int eu, int ev, int ew) {
+  const std::vector<int> idx = element_control_points(p, ex, eu, ev, ew);
+  const Eigen::MatrixXd H = detail::homogeneous_points(p);
+  Eigen::MatrixXd local(static_cast<long>(idx.size()), H.cols());
+  for (size_t i = 0; i < idx.size(); ++i) local.row(i) = H.row(idx[i]);
+  BezierElement e = bezier_element_from(element_extraction_operator(ex, eu, ev, ew), local);
   const int el[3] = {eu, ev, ew};
   for (int d = 0; d < 3; ++d) e.domain[d] = {{ex.dirs[d].breaks[el[d]], ex.dirs[d].breaks[el[d] + 1]}};
   return e;

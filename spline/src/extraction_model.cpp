@@ -133,19 +133,16 @@ ExtractionModel extraction_model(const MultiPatch& mp) {
 
 BezierElement bernstein_element(const ExtractionModel& m, int element) {
   const ExtractionElement& e = m.elements.at(static_cast<std::size_t>(element));
-  Eigen::MatrixXd H(static_cast<Eigen::Index>(e.functions.size()), 4);
+  const bool rational = m.rational();
+  Eigen::MatrixXd H(static_cast<Eigen::Index>(e.functions.size()), rational ? 4 : 3);
   for (std::size_t r = 0; r < e.functions.size(); ++r) {
     const double w = m.weights[e.functions[r]];
-    H.row(static_cast<Eigen::Index>(r)) << w * m.control_points.row(e.functions[r]), w;
+    if (rational)
+      H.row(static_cast<Eigen::Index>(r)) << w * m.control_points.row(e.functions[r]), w;
+    else
+      H.row(static_cast<Eigen::Index>(r)) = m.control_points.row(e.functions[r]);
   }
-  const Eigen::MatrixXd Hb = m.C(element).transpose() * H;
-  BezierElement out;
-  if (m.rational()) {
-    out.weights = Hb.col(3);
-    out.points = Hb.leftCols<3>().array().colwise() / out.weights.array();
-  } else {
-    out.points = Hb.leftCols<3>();
-  }
+  BezierElement out = bezier_element_from(m.C(element), H);
   out.domain = e.domain;
   return out;
 }

@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "igaprep/export/bext.h"
+#include "igaprep/export/export_model.h"
 #include "igaprep/spline/basis.h"
 #include "igaprep/spline/bezier_extraction.h"
 #include "igaprep/spline/curve_surface.h"
@@ -49,7 +50,7 @@ Eigen::Vector3d bezier_at(const nlohmann::json& e, const Eigen::Vector3d& t) {
 TEST(Bext, EachPartFileReproducesItsPatchesAtRandomPoints) {
   const std::string dir = scratch_dir("bext");
   const spline::MultiPatch mp = make_test_model();
-  igaprep::exporter::write_bext(mp, dir + "/m");
+  igaprep::exporter::export_model(mp, dir + "/m", {igaprep::exporter::Format::Bext});
   const std::vector<std::string> paths = igaprep::exporter::bext_paths(dir + "/m", 2);
   ASSERT_EQ(paths.size(), 3u);
   std::mt19937 rng(7);
@@ -135,7 +136,7 @@ std::string read_text(const std::string& path) {
 TEST(Bext, DeckHasOnePartPerMaterialAndTheLabelsNodeSets) {
   const std::string dir = scratch_dir("bext_deck");
   const spline::MultiPatch mp = make_test_model();
-  igaprep::exporter::write_bext(mp, dir + "/m");
+  igaprep::exporter::export_model(mp, dir + "/m", {igaprep::exporter::Format::Bext});
   const std::string deck = read_text(dir + "/m.k");
   auto count = [&](const std::string& what) {
     std::size_t n = 0;

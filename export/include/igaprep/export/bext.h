@@ -27,7 +27,6 @@ void write_bext_part(const spline::MultiPatch& model, int material, std::ostream
 // refers to, relative to the deck), *SET_NODE_LIST per boundary label and part.
 void write_lsdyna_deck(const spline::MultiPatch& model, const std::vector<std::string>& part_files, std::ostream& out);
 
-// Every file of bext_paths(basename, materials), each atomically.
-void write_bext(const spline::MultiPatch& model, const std::string& basename);
+// export_model (export_model.h) writes all of bext_paths at once.
 
 }  // namespace igaprep::exporter

@@ -46,6 +46,12 @@ struct BezierElement {
 BezierElement bernstein_control_points(const Patch& p, const PatchExtraction& ex, int eu, int ev,
                                        int ew);
 
+// The Bernstein points C^T H of an element whose functions' control points
+// are the rows of H: homogeneous (x w, y w, z w, w) with 4 columns (then
+// Cartesian points and the weights come out), Cartesian with 3 (no
+// weights). The domain is left for the caller.
+BezierElement bezier_element_from(const Eigen::MatrixXd& C, const Eigen::MatrixXd& H);
+
 // Evaluation of a Bezier element at local coordinates t in [0,1]^3.
 Eigen::Vector3d evaluate_bezier(const BezierElement& e, const std::array<int, 3>& degrees,
                                 const Eigen::Vector3d& t);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "commands.h"
+#include "igaprep/core/allocator.h"
 #include "igaprep/core/error.h"
 #include "igaprep/pipeline/run.h"
 
@@ -35,6 +36,7 @@ int usage(const CLI::App& app, const CLI::ParseError& e) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  igaprep::keep_freed_memory_for_reuse();
   CLI::App app{"igaprep: analysis-ready trivariate spline models from nested triangle meshes"};
   app.set_version_flag("--version", igaprep::pipeline::generator_name());
   app.require_subcommand(1);

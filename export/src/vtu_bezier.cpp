@@ -97,6 +97,7 @@ void build_grid(const spline::MultiPatch& model, Grid& g) {
       for (int d = 0; d < 3; ++d) node_inv[d] = bernstein_node_inverse(deg[d]);
     }
     const spline::Material& mat = model.materials[p.material];
+    const std::vector<double> min_scaled_jacobian = detail::element_min_scaled_jacobians(p);
     for (int ew = 0; ew < ex.element_count(2); ++ew)
       for (int ev = 0; ev < ex.element_count(1); ++ev)
         for (int eu = 0; eu < ex.element_count(0); ++eu) {
@@ -115,7 +116,8 @@ void build_grid(const spline::MultiPatch& model, Grid& g) {
           const int el[3] = {eu, ev, ew};
           for (int d = 0; d < 3; ++d) be.domain[d] = {{ex.dirs[d].breaks[el[d]], ex.dirs[d].breaks[el[d] + 1]}};
           const int64_t base = detail::add_cell(g, be, vtk_of_local, deg, p.material, static_cast<int>(pi), {{eu, ev, ew}},
-                                                detail::element_min_scaled_jacobian(p, be.domain));
+                                                min_scaled_jacobian[static_cast<std::size_t>(
+                                                    eu + ex.element_count(0) * (ev + ex.element_count(1) * ew))]);
           if (!solution) continue;
           g.displacement.resize(g.displacement.size() + 3 * nb, 0.0);
           g.von_mises.resize(g.von_mises.size() + nb, 0.0);

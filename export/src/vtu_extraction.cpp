@@ -31,9 +31,8 @@ detail::Grid extraction_grid(const spline::ExtractionModel& m) {
       if (el.degrees[static_cast<std::size_t>(d)] < 1)
         throw bad_input("VTU Bezier: element " + std::to_string(e) + " has degree 0 (VTK Bezier cells need degree >= 1)");
     const spline::BezierElement be = spline::bernstein_element(m, e);
-    const std::array<std::array<double, 2>, 3> unit{{{{0.0, 1.0}}, {{0.0, 1.0}}, {{0.0, 1.0}}}};
     detail::add_cell(g, be, detail::vtk_hex_order(el.degrees), el.degrees, el.material, el.patch, el.index,
-                     detail::element_min_scaled_jacobian(bezier_patch(be, el.degrees), unit));
+                     detail::element_min_scaled_jacobians(bezier_patch(be, el.degrees)).front());
   }
   detail::share_coincident_points(g);
   return g;

@@ -10,6 +10,7 @@
 #include "igaprep/export/vtu_bezier.h"
 #include "vtu_arrays.h"
 #include "igaprep/spline/evaluate.h"
+#include "igaprep/spline/knot_vector.h"
 #include "igaprep/spline/scaled_jacobian.h"
 
 namespace igaprep::exporter::detail {
@@ -86,20 +87,34 @@ std::vector<int> vtk_hex_order(const std::array<int, 3>& deg) {
   return out;
 }
 
-double element_min_scaled_jacobian(const spline::Patch& p, const std::array<std::array<double, 2>, 3>& domain) {
-  double q = std::numeric_limits<double>::infinity();
-  for (int k = 0; k <= p.degrees[2]; ++k)
-    for (int j = 0; j <= p.degrees[1]; ++j)
-      for (int i = 0; i <= p.degrees[0]; ++i) {
-        const int at[3] = {i, j, k};
-        Eigen::Vector3d xi;
-        for (int d = 0; d < 3; ++d)
-          xi[d] = domain[d][0] + (domain[d][1] - domain[d][0]) * static_cast<double>(at[d]) / p.degrees[d];
-        q = std::min(q, spline::scaled_jacobian(spline::evaluate_jacobian(p, xi)));
+std::vector<double> element_min_scaled_jacobians(const spline::Patch& p) {
+  // One grid evaluation of the whole patch: every element's nodes, elements
+  // side by side (a shared node is evaluated for each element it belongs to).
+  std::array<std::vector<double>, 3> params;
+  std::array<int, 3> ne{}, nodes{};
+  for (int d = 0; d < 3; ++d) {
+    const std::vector<double> brk = spline::unique_knots(p.knots[d]);
+    ne[d] = static_cast<int>(brk.size()) - 1;
+    nodes[d] = p.degrees[d] + 1;
+    for (int e = 0; e < ne[d]; ++e)
+      for (int i = 0; i < nodes[d]; ++i)
+        params[d].push_back(brk[e] + (brk[e + 1] - brk[e]) * static_cast<double>(i) / p.degrees[d]);
+  }
+  const spline::GridEvaluation ev = spline::evaluate_grid(p, params, 1);
+  std::vector<double> q(static_cast<std::size_t>(ne[0]) * ne[1] * ne[2], std::numeric_limits<double>::infinity());
+  const long nu = static_cast<long>(params[0].size()), nv = static_cast<long>(params[1].size());
+  for (long k = 0; k < static_cast<long>(params[2].size()); ++k)
+    for (long j = 0; j < nv; ++j)
+      for (long i = 0; i < nu; ++i) {
+        const long at = i + nu * (j + nv * k);
+        Eigen::Matrix3d J;
+        for (int c = 0; c < 3; ++c)
+          for (int d = 0; d < 3; ++d) J(c, d) = ev.jacobians(at, 3 * c + d);
+        double& m = q[static_cast<std::size_t>(i / nodes[0] + ne[0] * (j / nodes[1] + ne[1] * (k / nodes[2])))];
+        m = std::min(m, spline::scaled_jacobian(J));
       }
   return q;
 }
-
 
 void write_grid(std::ostream& out, const Grid& g, const VtuOptions& options) {
   const bool solution = !g.von_mises.empty();

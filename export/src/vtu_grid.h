@@ -45,9 +45,9 @@ int64_t add_cell(Grid& g, const spline::BezierElement& be, const std::vector<int
 // von Mises when the grid has them; options' certified bounds when given).
 void write_grid(std::ostream& out, const Grid& g, const VtuOptions& options);
 
-// The smallest scaled Jacobian at the element's (p + 1)^3 equispaced nodes
-// (corners included) over the parameter box `domain` of the patch: a sample,
-// not a bound (igaprep check certifies).
-double element_min_scaled_jacobian(const spline::Patch& p, const std::array<std::array<double, 2>, 3>& domain);
+// Per element of the patch (u fastest, then v, then w), the smallest scaled
+// Jacobian at the element's (p + 1)^3 equispaced nodes (corners included): a
+// sample, not a bound (igaprep check certifies).
+std::vector<double> element_min_scaled_jacobians(const spline::Patch& p);
 
 }  // namespace igaprep::exporter::detail

@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 
 #include <cmath>
+#include <string>
 
 #include "igaprep/core/error.h"
 
@@ -17,10 +18,21 @@ double binomial(int n, int k) {
   return r;
 }
 
-std::vector<double> binomial_row(int n) {
-  std::vector<double> row(n + 1);
-  for (int k = 0; k <= n; ++k) row[k] = binomial(n, k);
-  return row;
+// Rows of Pascal's triangle up to the largest degree a product can have
+// (the check refuses degrees over 40, a Jacobian's numerator is 3p - 1).
+constexpr int kMaxBinomialRow = 128;
+
+const std::vector<double>& binomial_row(int n) {
+  static const std::vector<std::vector<double>> rows = [] {
+    std::vector<std::vector<double>> r(kMaxBinomialRow + 1);
+    for (int m = 0; m <= kMaxBinomialRow; ++m) {
+      r[m].resize(m + 1);
+      for (int k = 0; k <= m; ++k) r[m][k] = binomial(m, k);
+    }
+    return r;
+  }();
+  if (n < 0 || n > kMaxBinomialRow) throw internal_error("Bernstein3: degree " + std::to_string(n) + " out of range");
+  return rows[n];
 }
 
 }  // namespace
@@ -37,22 +49,22 @@ Bernstein3 bernstein_product(const Bernstein3& a, const Bernstein3& b) {
   Bernstein3 c(deg, 0.0);
   // Scale both into the basis C(n,i) t^i (1-t)^(n-i) / ... : with scaled
   // coefficients the product is a plain convolution.
-  std::array<std::vector<double>, 3> ba, bb, bc;
+  std::array<const std::vector<double>*, 3> ba, bb, bc;
   for (int d = 0; d < 3; ++d) {
-    ba[d] = binomial_row(a.degree[d]);
-    bb[d] = binomial_row(b.degree[d]);
-    bc[d] = binomial_row(deg[d]);
+    ba[d] = &binomial_row(a.degree[d]);
+    bb[d] = &binomial_row(b.degree[d]);
+    bc[d] = &binomial_row(deg[d]);
   }
   std::vector<double> sb(b.coeffs.size());
   for (int k = 0; k < b.size(2); ++k)
     for (int j = 0; j < b.size(1); ++j)
-      for (int i = 0; i < b.size(0); ++i) sb[b.index(i, j, k)] = b(i, j, k) * bb[0][i] * bb[1][j] * bb[2][k];
+      for (int i = 0; i < b.size(0); ++i) sb[b.index(i, j, k)] = b(i, j, k) * (*bb[0])[i] * (*bb[1])[j] * (*bb[2])[k];
   const int nb0 = b.size(0), nb1 = b.size(1), nb2 = b.size(2);
   const int nc0 = c.size(0), nc1 = c.size(1);
   for (int k = 0; k < a.size(2); ++k)
     for (int j = 0; j < a.size(1); ++j)
       for (int i = 0; i < a.size(0); ++i) {
-        const double sa = a(i, j, k) * ba[0][i] * ba[1][j] * ba[2][k];
+        const double sa = a(i, j, k) * (*ba[0])[i] * (*ba[1])[j] * (*ba[2])[k];
         if (sa == 0.0) continue;
         for (int k2 = 0; k2 < nb2; ++k2)
           for (int j2 = 0; j2 < nb1; ++j2) {
@@ -63,7 +75,7 @@ Bernstein3 bernstein_product(const Bernstein3& a, const Bernstein3& b) {
       }
   for (int k = 0; k < c.size(2); ++k)
     for (int j = 0; j < c.size(1); ++j)
-      for (int i = 0; i < c.size(0); ++i) c(i, j, k) /= bc[0][i] * bc[1][j] * bc[2][k];
+      for (int i = 0; i < c.size(0); ++i) c(i, j, k) /= (*bc[0])[i] * (*bc[1])[j] * (*bc[2])[k];
   return c;
 }
 

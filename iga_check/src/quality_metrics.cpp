@@ -1,5 +1,6 @@
 #include "igaprep/iga_check/quality_metrics.h"
 
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
@@ -16,10 +17,13 @@ namespace igaprep::iga_check {
 
 double condition_number(const Eigen::Matrix3d& J) {
   const double det = J.determinant();
-  const double fro = J.norm();
   if (det == 0.0 || !std::isfinite(det)) return std::numeric_limits<double>::infinity();
-  const double c = fro * J.inverse().norm() / 3.0;
-  return std::isfinite(c) ? c : std::numeric_limits<double>::infinity();
+  // J^-1 = cof(J)^T / det J, and the cofactor matrix's columns are the cross
+  // products of J's columns: no inverse needed.
+  const Eigen::Vector3d a = J.col(0), b = J.col(1), c = J.col(2);
+  const double cof2 = b.cross(c).squaredNorm() + c.cross(a).squaredNorm() + a.cross(b).squaredNorm();
+  const double cn = std::sqrt(J.squaredNorm() * cof2) / (3.0 * std::abs(det));
+  return std::isfinite(cn) ? cn : std::numeric_limits<double>::infinity();
 }
 
 namespace {

@@ -28,7 +28,7 @@ struct Copy {
 // is degenerate (a collapsed side): the check reports 0 there, but no
 // control point can raise it, so the repairs leave those points out.
 inline double repair_scaled(const Eigen::Matrix3d& J) {
-  return degenerate_jacobian(J) ? std::numeric_limits<double>::infinity() : scaled_jacobian(J);
+  return scaled_jacobian_or(J, std::numeric_limits<double>::infinity());
 }
 
 // Per global control point, its copies in the patches that hold it.

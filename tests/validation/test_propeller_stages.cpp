@@ -15,7 +15,7 @@
 #include "igaprep/pipeline/midsurface.h"
 #include "igaprep/pipeline/surfaces.h"
 #include "igaprep/pipeline/volume.h"
-#include "pipeline_runs.h"
+#include "pipeline/pipeline_runs.h"
 
 namespace {
 

@@ -107,11 +107,8 @@ std::vector<double> element_min_scaled_jacobians(const spline::Patch& p) {
     for (long j = 0; j < nv; ++j)
       for (long i = 0; i < nu; ++i) {
         const long at = i + nu * (j + nv * k);
-        Eigen::Matrix3d J;
-        for (int c = 0; c < 3; ++c)
-          for (int d = 0; d < 3; ++d) J(c, d) = ev.jacobians(at, 3 * c + d);
         double& m = q[static_cast<std::size_t>(i / nodes[0] + ne[0] * (j / nodes[1] + ne[1] * (k / nodes[2])))];
-        m = std::min(m, spline::scaled_jacobian(J));
+        m = std::min(m, spline::scaled_jacobian(spline::grid_jacobian(ev, at)));
       }
   return q;
 }

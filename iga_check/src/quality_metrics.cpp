@@ -121,10 +121,7 @@ void for_each_point(const spline::Patch& p, const PatchSampling& s, F&& f) {
     for (int k = k0; k < k1; ++k)
       for (int j = 0; j < nv; ++j)
         for (int i = 0; i < nu; ++i, ++at) {
-          Eigen::Matrix3d J;
-          for (int c = 0; c < 3; ++c)
-            for (int d = 0; d < 3; ++d) J(c, d) = ev.jacobians(at, 3 * c + d);
-          f(J, i, j, k, ev.points.row(at));
+          f(spline::grid_jacobian(ev, at), i, j, k, ev.points.row(at));
         }
     k0 = k1;
   }

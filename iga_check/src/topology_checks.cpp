@@ -62,10 +62,7 @@ double patch_volume(const spline::Patch& p) {
   for (size_t k = 0; k < pts[2].size(); ++k)
     for (size_t j = 0; j < pts[1].size(); ++j)
       for (size_t i = 0; i < pts[0].size(); ++i, ++at) {
-        Eigen::Matrix3d J;
-        for (int c = 0; c < 3; ++c)
-          for (int d = 0; d < 3; ++d) J(c, d) = ev.jacobians(at, 3 * c + d);
-        vol += J.determinant() * wts[0][i] * wts[1][j] * wts[2][k];
+        vol += spline::grid_jacobian(ev, at).determinant() * wts[0][i] * wts[1][j] * wts[2][k];
       }
   return vol;
 }

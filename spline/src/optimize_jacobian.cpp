@@ -48,7 +48,7 @@ struct PatchSamples {
 std::vector<Eigen::Matrix3d> grid_jacobians(const Patch& p, const std::array<std::vector<double>, 3>& params) {
   const GridEvaluation ev = evaluate_grid(p, params, 1);
   std::vector<Eigen::Matrix3d> J(static_cast<std::size_t>(ev.jacobians.rows()));
-  for (Eigen::Index at = 0; at < ev.jacobians.rows(); ++at) J[static_cast<std::size_t>(at)] = detail::grid_jacobian(ev, at);
+  for (Eigen::Index at = 0; at < ev.jacobians.rows(); ++at) J[static_cast<std::size_t>(at)] = grid_jacobian(ev, at);
   return J;
 }
 

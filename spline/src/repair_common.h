@@ -46,14 +46,6 @@ std::vector<double> repair_sample_params(const std::vector<double>& knots, int p
 // The same in each direction of a patch: its tensor grid of samples.
 std::array<std::vector<double>, 3> repair_sample_grid(const Patch& p, int points);
 
-// The Jacobian at grid point `at` of an evaluate_grid result (J(c, d) = d x_c / d u_d).
-inline Eigen::Matrix3d grid_jacobian(const GridEvaluation& ev, Eigen::Index at) {
-  Eigen::Matrix3d J;
-  for (int c = 0; c < 3; ++c)
-    for (int d = 0; d < 3; ++d) J(c, d) = ev.jacobians(at, 3 * c + d);
-  return J;
-}
-
 // Distance from x to the nearest distinct neighbouring control point in any copy's grid
 // (+infinity when every neighbour coincides with x).
 double nearest_neighbour(const MultiPatch& mp, const std::vector<Copy>& copies, const Eigen::Vector3d& x);

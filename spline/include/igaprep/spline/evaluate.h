@@ -55,6 +55,14 @@ struct GridEvaluation {
                               // derivative of x_c, k = 0..5 for uu, vv, ww, uv, uw, vw
 };
 
+// The Jacobian at grid point `at` of an evaluate_grid result (J(c, d) = d x_c / d u_d).
+inline Eigen::Matrix3d grid_jacobian(const GridEvaluation& ev, Eigen::Index at) {
+  Eigen::Matrix3d J;
+  for (int c = 0; c < 3; ++c)
+    for (int d = 0; d < 3; ++d) J(c, d) = ev.jacobians(at, 3 * c + d);
+  return J;
+}
+
 // Evaluates a patch at the grid the basis was built for (the basis must come
 // from a patch with the same degrees and knots; checked, bad_input otherwise).
 GridEvaluation evaluate_grid(const Patch& p, const GridBasis& basis);

@@ -50,6 +50,10 @@ void check_conditions(const spline::MultiPatch& mp, const ElasticityProblem& pro
   }
   for (const auto& t : problem.tractions) sides_with_label(mp, t.label, "traction load");
   for (const auto& t : problem.pressures) sides_with_label(mp, t.label, "pressure load");
+  for (const auto& f : problem.forces) {
+    if (f.labels.empty()) throw bad_input("force load: no label given");
+    for (const auto& l : f.labels) sides_with_label(mp, l, "force load");
+  }
 }
 
 void check_loads_finite(const ElasticityProblem& problem) {
@@ -58,6 +62,15 @@ void check_loads_finite(const ElasticityProblem& problem) {
     if (!t.traction.allFinite()) throw bad_input("traction on '" + t.label + "': not finite");
   for (const auto& t : problem.pressures)
     if (!std::isfinite(t.pressure)) throw bad_input("pressure on '" + t.label + "': not finite");
+  for (const auto& f : problem.forces)
+    if (!f.force.allFinite()) throw bad_input("force on '" + f.labels.front() + "': not finite");
+  if (const auto& r = problem.rotation) {
+    if (!(std::isfinite(r->density) && r->density >= 0.0))
+      throw bad_input("rotation: the density must be finite and not negative");
+    if (!std::isfinite(r->angular_velocity)) throw bad_input("rotation: the angular velocity is not finite");
+    if (!r->point.allFinite()) throw bad_input("rotation: the axis point is not finite");
+    if (!(r->axis.allFinite() && r->axis.norm() > 0.0)) throw bad_input("rotation: the axis must be a non-zero vector");
+  }
 }
 
 }  // namespace

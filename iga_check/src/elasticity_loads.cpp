@@ -3,6 +3,7 @@
 #include "elasticity_basis.h"
 #include "elasticity_input.h"
 #include "elasticity_side_points.h"
+#include "igaprep/core/error.h"
 
 namespace igaprep::iga_check::detail {
 
@@ -23,8 +24,10 @@ void add_body_force(const spline::MultiPatch& mp, const std::vector<PatchTables>
           const Eigen::VectorXd wdet = ev.w.cwiseProduct(ev.det.cwiseAbs());
           const int n = static_cast<int>(ev.local.size());
           for (Eigen::Index q = 0; q < wdet.size(); ++q) {
+            const Eigen::Vector3d x = ev.x.row(q).transpose();
             Eigen::Vector3d b = problem.body_force;
-            if (problem.body_force_function) b += problem.body_force_function(ev.x.row(q).transpose());
+            if (problem.body_force_function) b += problem.body_force_function(x);
+            if (problem.rotation) b += problem.rotation->body_force(x);
             for (int a = 0; a < n; ++a)
               for (int i = 0; i < 3; ++i) {
                 const int r = dofs.equation[3 * global[ev.local[a]] + i];
@@ -56,12 +59,34 @@ void add_surface_load(const spline::MultiPatch& mp, const std::vector<PatchTable
       [] {});
 }
 
+// The summed area of the sides with these labels, by the loads' quadrature.
+double labelled_area(const spline::MultiPatch& mp, const std::vector<PatchTables>& tables,
+                     const std::vector<std::string>& labels) {
+  double area = 0.0;
+  for (const auto& l : labels)
+    for (const auto& b : sides_with_label(mp, l, "force load"))
+      for_side_points(
+          mp.patches[b.patch], b.side, tables[b.patch],
+          [&](const ElementValues&, Eigen::Index, const Eigen::Vector3d&, double dA) { area += dA; }, [] {});
+  return area;
+}
+
+// A total force as the constant traction force / area on its sides.
+void add_force_load(const spline::MultiPatch& mp, const std::vector<PatchTables>& tables, const ElasticityDofs& dofs,
+                    const ForceLoad& fl, Eigen::VectorXd& F) {
+  const double area = labelled_area(mp, tables, fl.labels);
+  if (!(area > 0.0)) throw bad_input("force load on '" + fl.labels.front() + "': its sides have no area");
+  for (const auto& l : fl.labels)
+    for (const auto& b : sides_with_label(mp, l, "force load"))
+      add_surface_load(mp, tables, dofs, b, fl.force / area, 0.0, F);
+}
+
 }  // namespace
 
 Eigen::VectorXd assemble_loads(const spline::MultiPatch& mp, const std::vector<PatchTables>& tables,
                                const ElasticityDofs& dofs, const ElasticityProblem& problem) {
   Eigen::VectorXd F = Eigen::VectorXd::Zero(dofs.unknowns);
-  if (problem.body_force.squaredNorm() > 0.0 || problem.body_force_function)
+  if (problem.body_force.squaredNorm() > 0.0 || problem.body_force_function || problem.rotation)
     add_body_force(mp, tables, dofs, problem, F);
   for (const auto& tl : problem.tractions)
     for (const auto& b : sides_with_label(mp, tl.label, "traction load"))
@@ -69,6 +94,7 @@ Eigen::VectorXd assemble_loads(const spline::MultiPatch& mp, const std::vector<P
   for (const auto& pl : problem.pressures)
     for (const auto& b : sides_with_label(mp, pl.label, "pressure load"))
       add_surface_load(mp, tables, dofs, b, Eigen::Vector3d::Zero(), pl.pressure, F);
+  for (const auto& fl : problem.forces) add_force_load(mp, tables, dofs, fl, F);
   return F;
 }
 

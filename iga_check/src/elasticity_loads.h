@@ -11,9 +11,10 @@
 namespace igaprep::iga_check::detail {
 
 // Inputs: the model, its tables and degrees of freedom, the problem.
-// Output: F (dofs.unknowns): the body force (constant and function), then the
-// tractions, then the pressures (traction -pressure * outward normal),
-// integrated against every basis function.
+// Output: F (dofs.unknowns): the body force (constant, function and
+// rotation), then the tractions, the pressures (traction -pressure * outward
+// normal) and the total forces (force / area), integrated against every
+// basis function.
 Eigen::VectorXd assemble_loads(const spline::MultiPatch& mp, const std::vector<PatchTables>& tables,
                                const ElasticityDofs& dofs, const ElasticityProblem& problem);
 

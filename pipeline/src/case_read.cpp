@@ -130,6 +130,21 @@ void for_each_entry(const json& v, const std::string& key, F read) {
   }
 }
 
+// "rotation": {"density", "angular_velocity", "axis" (default z), "point"
+// (default the origin)}.
+iga_check::RotationLoad read_rotation(const json& v, const std::string& file) {
+  ObjectReader r(v, "load_case.rotation", file);
+  iga_check::RotationLoad rot;
+  rot.density = r.required_number("density");
+  if (!(rot.density > 0.0)) r.fail("'load_case.rotation.density' must be positive");
+  rot.angular_velocity = r.required_number("angular_velocity");
+  if (const json* a = r.find("axis")) rot.axis = read_vector3(*a, "load_case.rotation.axis", file);
+  if (!(rot.axis.norm() > 0.0)) r.fail("'load_case.rotation.axis' must not be the zero vector");
+  if (const json* p = r.find("point")) rot.point = read_vector3(*p, "load_case.rotation.point", file);
+  r.refuse_unknown();
+  return rot;
+}
+
 CaseLoadCase read_load_case(const json& v, const std::string& file) {
   ObjectReader r(v, "load_case", file);
   CaseLoadCase lc;
@@ -175,7 +190,19 @@ CaseLoadCase read_load_case(const json& v, const std::string& file) {
       er.refuse_unknown();
       lc.traction.push_back(ct);
     });
+  if (const json* f = r.find("force"))
+    for_each_entry(*f, "load_case.force", [&](const json& e, const std::string& where) {
+      ObjectReader er(e, where, file);
+      CaseForce cf;
+      cf.where = read_selection(er, file);
+      const json* value = er.find("value");
+      if (!value) er.fail("missing key '" + er.path("value") + "' ([Fx, Fy, Fz], the total force)");
+      cf.value = read_vector3(*value, er.path("value"), file);
+      er.refuse_unknown();
+      lc.force.push_back(cf);
+    });
   if (const json* b = r.find("body_force")) lc.body_force = read_vector3(*b, "load_case.body_force", file);
+  if (const json* rot = r.find("rotation")) lc.rotation = read_rotation(*rot, file);
   lc.refine = r.integer("refine", lc.refine, 0, 4);
   lc.solver = read_solver(r, lc.solver);
   r.refuse_unknown();

@@ -81,9 +81,20 @@ json load_case_json(const CaseLoadCase& lc) {
     e["value"] = {t.value.x(), t.value.y(), t.value.z()};
     traction.push_back(e);
   }
-  return {{"fix", fix}, {"pressure", pressure}, {"traction", traction},
-          {"body_force", {lc.body_force.x(), lc.body_force.y(), lc.body_force.z()}}, {"refine", lc.refine},
-          {"solver", solver_name(lc.solver)}};
+  json force = json::array();
+  for (const auto& f : lc.force) {
+    json e = selection_json(f.where);
+    e["value"] = {f.value.x(), f.value.y(), f.value.z()};
+    force.push_back(e);
+  }
+  json out{{"fix", fix}, {"pressure", pressure}, {"traction", traction}, {"force", force},
+           {"body_force", {lc.body_force.x(), lc.body_force.y(), lc.body_force.z()}}, {"refine", lc.refine},
+           {"solver", solver_name(lc.solver)}};
+  if (const auto& r = lc.rotation)
+    out["rotation"] = {{"density", r->density}, {"angular_velocity", r->angular_velocity},
+                       {"axis", {r->axis.x(), r->axis.y(), r->axis.z()}},
+                       {"point", {r->point.x(), r->point.y(), r->point.z()}}};
+  return out;
 }
 
 // Every stage option, defaults included.

@@ -117,6 +117,8 @@ LoadCaseLabels load_case_labels(const spline::MultiPatch& mp, const CaseLoadCase
     sels.push_back({&lc.pressure[i].where, "load_case.pressure[" + std::to_string(i) + "]"});
   for (std::size_t i = 0; i < lc.traction.size(); ++i)
     sels.push_back({&lc.traction[i].where, "load_case.traction[" + std::to_string(i) + "]"});
+  for (std::size_t i = 0; i < lc.force.size(); ++i)
+    sels.push_back({&lc.force[i].where, "load_case.force[" + std::to_string(i) + "]"});
 
   LoadCaseLabels out;
   out.model = mp;
@@ -180,6 +182,7 @@ LoadCaseLabels load_case_labels(const spline::MultiPatch& mp, const CaseLoadCase
   for (std::size_t i = 0; i < lc.fix.size(); ++i) out.fix.push_back(names[k++]);
   for (std::size_t i = 0; i < lc.pressure.size(); ++i) out.pressure.push_back(names[k++]);
   for (std::size_t i = 0; i < lc.traction.size(); ++i) out.traction.push_back(names[k++]);
+  for (std::size_t i = 0; i < lc.force.size(); ++i) out.force.push_back(names[k++]);
   return out;
 }
 
@@ -193,7 +196,9 @@ LoadCaseResult load_case_stage(const spline::MultiPatch& mp, const CaseLoadCase&
     for (const auto& l : lab.pressure[i]) problem.pressures.push_back({l, lc.pressure[i].value});
   for (std::size_t i = 0; i < lc.traction.size(); ++i)
     for (const auto& l : lab.traction[i]) problem.tractions.push_back({l, lc.traction[i].value});
+  for (std::size_t i = 0; i < lc.force.size(); ++i) problem.forces.push_back({lab.force[i], lc.force[i].value});
   problem.body_force = lc.body_force;
+  problem.rotation = lc.rotation;
   iga_check::ElasticityOptions options;
   options.refine = lc.refine;
   options.solver = linear_solver(lc.solver);

@@ -64,6 +64,15 @@ TEST(Case, BadKeysAreRefusedByName) {
       {R"(, "load_case": {"fix": [{"label": "outer", "box": [[1, 0, 0], [0, 1, 1]]}]})", "'load_case.fix[0].box'"},
       {R"(, "load_case": {"fix": "outer", "traction": {"label": "top", "value": [0, 0, 1]}})",
        "'load_case.traction[0].label': 'top' is not a surface label (labels: outer, inner)"},
+      {R"(, "load_case": {"fix": "outer", "force": {"label": "outer"}})", "missing key 'load_case.force.value'"},
+      {R"(, "load_case": {"fix": "outer", "rotation": {"density": 2.7e-9}})",
+       "missing key 'load_case.rotation.angular_velocity'"},
+      {R"(, "load_case": {"fix": "outer", "rotation": {"density": 0, "angular_velocity": 1}})",
+       "'load_case.rotation.density' must be positive"},
+      {R"(, "load_case": {"fix": "outer", "rotation": {"density": 1, "angular_velocity": 1, "axis": [0, 0, 0]}})",
+       "'load_case.rotation.axis' must not be the zero vector"},
+      {R"(, "load_case": {"fix": "outer", "rotation": {"density": 1, "angular_velocity": 1, "speed": 2}})",
+       "unknown key 'load_case.rotation.speed'"},
       {R"(, "midsurface": {"colour": 1})", "unknown key 'midsurface.colour'"},
       {R"(, "midsurface": {"m0": 0.4})", "'midsurface.m0' is no longer read"},
       {R"(, "midsurface": {"cut": "planar"})", "'midsurface.cut' must be"},
@@ -191,7 +200,9 @@ TEST(Case, BuiltinCaseEqualsTheCommittedOne) {
 // case_json with every option reads back to the same options.
 TEST(Case, AllOptionsJsonReadsBack) {
   const Case c = parse_case(sphere2_case(R"(, "decomposition": {"inset": 0.4, "theta": 0.9}, "export": ["vtu"],
-      "load_case": {"fix": {"label": "outer", "components": "xz"}, "traction": {"label": "inner", "value": [0, 1, 0]}})"),
+      "load_case": {"fix": {"label": "outer", "components": "xz"}, "traction": {"label": "inner", "value": [0, 1, 0]},
+                    "force": {"label": "outer", "box": [[0, 0, 0], [2, 2, 2]], "value": [0, 0, -2000]},
+                    "rotation": {"density": 2.7e-9, "angular_velocity": 1000, "axis": [0, 1, 0], "point": [1, 0, 0]}})"),
                             models_dir() + "/sphere2", "case.json");
   const std::string text = igaprep::pipeline::case_json(c, models_dir() + "/sphere2", true);
   const Case back = parse_case(text, models_dir() + "/sphere2", "back.json");
@@ -200,6 +211,13 @@ TEST(Case, AllOptionsJsonReadsBack) {
   ASSERT_TRUE(back.load_case);
   EXPECT_FALSE(back.load_case->fix.at(0).components[1]);
   EXPECT_EQ(back.load_case->traction.at(0).value.y(), 1.0);
+  EXPECT_EQ(back.load_case->force.at(0).value.z(), -2000.0);
+  EXPECT_EQ((*back.load_case->force.at(0).where.box)[1].x(), 2.0);
+  ASSERT_TRUE(back.load_case->rotation);
+  EXPECT_EQ(back.load_case->rotation->density, 2.7e-9);
+  EXPECT_EQ(back.load_case->rotation->angular_velocity, 1000.0);
+  EXPECT_EQ(back.load_case->rotation->axis, Eigen::Vector3d(0, 1, 0));
+  EXPECT_EQ(back.load_case->rotation->point, Eigen::Vector3d(1, 0, 0));
 }
 
 }  // namespace

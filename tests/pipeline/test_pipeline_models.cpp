@@ -12,6 +12,7 @@
 
 #include "igaprep/core/error.h"
 #include "igaprep/export/hdf5_model.h"
+#include "igaprep/pipeline/validation.h"
 #include "igaprep/spline/multipatch_topology.h"
 #include "pipeline_runs.h"
 
@@ -227,6 +228,38 @@ TEST(PipelineModels, LoadCaseBoxWithoutSidesIsNamedAndTheReportKept) {
 }  // namespace
 
 namespace {
+
+// The load case's total force and rotation reach the solve: the strain
+// energy is quadratic in the force and in omega^2 (to round-off), the two
+// together give the energies' sum plus the cross term, and a force split
+// over two boxes does what the one force does.
+TEST(PipelineModels, ForceAndRotationLoadsReachTheSolve) {
+  const auto c = model_case("sphere2", R"({"fit": {"elements": 2, "jacobian_target": 0},
+      "validation": {"enabled": false}})", "sphere2_loads");
+  igaprep::pipeline::Observer quiet;
+  const RunResult r = igaprep::pipeline::run(c, quiet, {"", false});
+  using igaprep::pipeline::CaseLoadCase;
+  auto energy = [&](const CaseLoadCase& lc) {
+    return igaprep::pipeline::load_case_stage(r.model, lc, quiet).solution.report.strain_energy;
+  };
+  CaseLoadCase lc;
+  lc.fix = {{{"outer", std::array<Eigen::Vector3d, 2>{Eigen::Vector3d(-2, -2, -2), Eigen::Vector3d(-0.3, 2, 2)}}}};
+  const auto right = std::array<Eigen::Vector3d, 2>{Eigen::Vector3d(0.3, -2, -2), Eigen::Vector3d(2, 2, 2)};
+  lc.force = {{{"outer", right}, Eigen::Vector3d(0.0, 0.0, -1.0)}};
+  const double f1 = energy(lc);
+  lc.force[0].value *= 2.0;
+  EXPECT_NEAR(energy(lc), 4.0 * f1, 1e-10 * f1);
+  EXPECT_GT(f1, 0.0);
+  // The same force as two entries of half the force each on the same box.
+  lc.force = {{{"outer", right}, Eigen::Vector3d(0.0, 0.0, -0.5)}, {{"outer", right}, Eigen::Vector3d(0.0, 0.0, -0.5)}};
+  EXPECT_NEAR(energy(lc), f1, 1e-10 * f1);
+  lc.force.clear();
+  lc.rotation = igaprep::iga_check::RotationLoad{1.0, 0.5, Eigen::Vector3d::UnitX(), Eigen::Vector3d::Zero()};
+  const double w1 = energy(lc);
+  lc.rotation->angular_velocity = 1.0;
+  EXPECT_NEAR(energy(lc), 16.0 * w1, 1e-10 * w1);
+  EXPECT_GT(w1, 0.0);
+}
 
 // A model with only positive elements that misses part of the solid fails the
 // run: one element per direction leaves sphere2 2.2 % off its outer surface.

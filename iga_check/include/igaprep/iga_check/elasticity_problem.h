@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <functional>
+#include <optional>
 
 #include "igaprep/core/progress.h"
 #include <string>
@@ -42,11 +43,36 @@ struct PressureLoad {
   double pressure = 0.0;
 };
 
+// A total force spread as one constant traction over every side labelled
+// with one of `labels`: traction = force / (the sides' summed area), so the
+// sides together carry exactly `force` (a joint load given in newtons).
+struct ForceLoad {
+  std::vector<std::string> labels;
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+};
+
+// The model spinning at a steady angular velocity about an axis (through
+// `point` along `axis`), seen in its rotating frame: the centrifugal body
+// force density * omega^2 * r per volume, r the vector from the axis to x.
+struct RotationLoad {
+  double density = 0.0;           // mass per volume (t/mm^3 with MPa and mm)
+  double angular_velocity = 0.0;  // rad/s
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  // any length but zero
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+
+  Eigen::Vector3d body_force(const Eigen::Vector3d& x) const {
+    const Eigen::Vector3d a = axis.normalized(), r = x - point;
+    return density * angular_velocity * angular_velocity * (r - r.dot(a) * a);
+  }
+};
+
 struct ElasticityProblem {
   std::vector<FixedSide> fixed;
   std::vector<PrescribedSide> prescribed;
   std::vector<TractionLoad> tractions;
   std::vector<PressureLoad> pressures;
+  std::vector<ForceLoad> forces;
+  std::optional<RotationLoad> rotation;
   Eigen::Vector3d body_force = Eigen::Vector3d::Zero();  // force per volume
   // Optional body force b(x) per volume, added to `body_force` at every
   // quadrature point (used for manufactured solutions).

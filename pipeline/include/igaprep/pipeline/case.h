@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "igaprep/iga_check/elasticity_problem.h"
 #include "igaprep/iga_check/report.h"
 #include "igaprep/mesh/tetrahedralize.h"
 #include "igaprep/mesh/tri_mesh.h"
@@ -73,12 +74,20 @@ struct CaseTraction {
   Eigen::Vector3d value = Eigen::Vector3d::Zero();
 };
 
+// A total force (newtons with MPa and mm) spread over the selected sides.
+struct CaseForce {
+  CaseSideSelection where;
+  Eigen::Vector3d value = Eigen::Vector3d::Zero();
+};
+
 // Section "load_case": a solve with the case's materials, written as result.h5.
 struct CaseLoadCase {
   std::vector<CaseFix> fix;
   std::vector<CasePressure> pressure;
   std::vector<CaseTraction> traction;
+  std::vector<CaseForce> force;
   Eigen::Vector3d body_force = Eigen::Vector3d::Zero();
+  std::optional<iga_check::RotationLoad> rotation;
   int refine = 0;
   SolverChoice solver = SolverChoice::Cholesky;
 };

@@ -29,12 +29,12 @@ iga_check::PipelineValidation validation_stage(const spline::MultiPatch& mp, con
 
 // Inputs: model, the load case. Output: a copy of the model whose sides
 // selected by boxes carry derived labels ("outer[box 0]", ...), and for each
-// selection of the load case (fix, then pressure, then traction, in order)
+// selection of the load case (fix, pressure, traction, force, in order)
 // the labels it stands for. Throws bad_input naming the key when a label
 // names no boundary side or a box holds no side.
 struct LoadCaseLabels {
   spline::MultiPatch model;
-  std::vector<std::vector<std::string>> fix, pressure, traction;
+  std::vector<std::vector<std::string>> fix, pressure, traction, force;
 };
 LoadCaseLabels load_case_labels(const spline::MultiPatch& mp, const CaseLoadCase& lc);
 

@@ -30,7 +30,8 @@ double smoothstep(double h) { return h * h * (3.0 - 2.0 * h); }
 
 ShellColumns::ShellColumns(const FieldProbe& probe, double step, int* hint, const std::vector<double>& params,
                            const std::vector<Eigen::Vector3d>& face, const std::function<bool(int)>& traced,
-                           const std::array<bool, 4>& fixed_sides, bool spread, const std::vector<double>& depths)
+                           const std::array<bool, 4>& fixed_sides, bool spread, const std::vector<double>& depths,
+                           const SpreadOptions& spread_options)
     : probe_(probe), step_(step), hint_(hint), params_(params), face_(face), depths_(depths) {
   const int m = static_cast<int>(params.size());
   grid_.resize(face.size());
@@ -47,7 +48,7 @@ ShellColumns::ShellColumns(const FieldProbe& probe, double step, int* hint, cons
   }
   std::vector<Eigen::Vector2d> moved =
       spread_face_params([&](const Eigen::Vector2d& p) { return last_point(trace_from(p)); }, params, ends,
-                         fixed_sides);
+                         fixed_sides, spread_options);
   if (moved == grid) return;
   moved_ = std::move(moved);
   trace_spread_columns(traced);

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include "igaprep/param/field_probe.h"
+#include "igaprep/param/shell_spread.h"
 #include "igaprep/param/streamline_column.h"
 
 namespace igaprep::param {
@@ -22,10 +23,11 @@ class ShellColumns {
   // face: m x m points (first index fastest) on params x params; traced(q):
   // whether sample q is traced (a ruled face: its long edges only);
   // fixed_sides: sides (bottom j = 0, right, top, left) not to spread;
-  // spread: try spreading at all (strategy 2, not a ruled face).
+  // spread: try spreading at all (strategy 2, not a ruled face), with `spread_options`.
   ShellColumns(const FieldProbe& probe, double step, int* hint, const std::vector<double>& params,
                const std::vector<Eigen::Vector3d>& face, const std::function<bool(int)>& traced,
-               const std::array<bool, 4>& fixed_sides, bool spread, const std::vector<double>& depths);
+               const std::array<bool, 4>& fixed_sides, bool spread, const std::vector<double>& depths,
+               const SpreadOptions& spread_options = {});
 
   // The streamline for sample q at depth h, one of the depths given.
   const StreamlineColumn& at(int q, double h) const;

@@ -29,15 +29,54 @@ bool uneven(const std::vector<Eigen::Vector3d>& ends, double ratio) {
   return largest > ratio * mean;
 }
 
-// Halves every interval whose chord is longer than `target`, depth first.
+double distance_to_segment(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const Eigen::Vector3d ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double t = len2 > 0.0 ? std::clamp((x - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return (x - (a + t * ab)).norm();
+}
+
+// The cubic through the ends at params[first .. first + 3] (Lagrange), at x.
+Eigen::Vector3d cubic_through(const std::vector<double>& params, const std::vector<Eigen::Vector3d>& ends,
+                              std::size_t first, double x) {
+  Eigen::Vector3d out = Eigen::Vector3d::Zero();
+  for (std::size_t a = first; a < first + 4; ++a) {
+    double l = 1.0;
+    for (std::size_t b = first; b < first + 4; ++b)
+      if (b != a) l *= (x - params[b]) / (params[a] - params[b]);
+    out += l * ends[a];
+  }
+  return out;
+}
+
+// Whether the end from the middle of some gap lies farther than `deviation`
+// from the cubic through the four nearest ends: a bulge the samples do not
+// see. A smooth curve's own bend is not one (the cubic follows it; the
+// chord would not, and ring2's shells were spread for nothing).
+bool bulging(const std::function<Eigen::Vector3d(double)>& end, const std::vector<double>& params,
+             const std::vector<Eigen::Vector3d>& ends, double deviation) {
+  if (!(deviation > 0.0) || params.size() < 4) return false;
+  for (std::size_t i = 0; i + 1 < params.size(); ++i) {
+    const double mid = 0.5 * (params[i] + params[i + 1]);
+    const std::size_t first = std::min(i > 0 ? i - 1 : 0, params.size() - 4);
+    if ((end(mid) - cubic_through(params, ends, first, mid)).norm() > deviation) return true;
+  }
+  return false;
+}
+
+// Halves every interval whose chord is longer than `target`, or whose
+// middle end lies farther than `deviation` from it, depth first.
 void refine(const std::function<Eigen::Vector3d(double)>& end, std::list<CurvePoint>& curve,
-            std::list<CurvePoint>::iterator a, double target, int depth) {
+            std::list<CurvePoint>::iterator a, double target, double deviation, int depth) {
   const auto b = std::next(a);
-  if (depth == 0 || (b->end - a->end).norm() <= target) return;
+  const bool short_chord = (b->end - a->end).norm() <= target;
+  if (depth == 0 || (short_chord && !(deviation > 0.0))) return;
   const double mid = 0.5 * (a->s + b->s);
-  const auto m = curve.insert(b, {mid, end(mid)});
-  refine(end, curve, a, target, depth - 1);
-  refine(end, curve, m, target, depth - 1);
+  const Eigen::Vector3d e = end(mid);
+  if (short_chord && distance_to_segment(e, a->end, b->end) <= deviation) return;
+  const auto m = curve.insert(b, {mid, e});
+  refine(end, curve, a, target, deviation, depth - 1);
+  refine(end, curve, m, target, deviation, depth - 1);
 }
 
 // The parameters at k / (count - 1) of the curve's chord length.
@@ -77,13 +116,13 @@ std::vector<double> even_end_params(const std::function<Eigen::Vector3d(double)>
                                     const SpreadOptions& options) {
   if (params.size() < 3 || params.size() != ends.size() || params.front() != 0.0 || params.back() != 1.0)
     throw internal_error("even_end_params: need at least 3 parameters from 0 to 1, one end each");
-  if (!uneven(ends, options.uneven_ratio)) return params;
+  if (!uneven(ends, options.uneven_ratio) && !bulging(end, params, ends, options.chord_deviation)) return params;
   std::list<CurvePoint> curve;
   for (std::size_t i = 0; i < params.size(); ++i) curve.push_back({params[i], ends[i]});
   const double target = chord_length(ends) / static_cast<double>((params.size() - 1) * options.per_gap);
   for (auto a = curve.begin(); std::next(a) != curve.end();) {
     const auto b = std::next(a);
-    refine(end, curve, a, target, options.refinements);
+    refine(end, curve, a, target, options.chord_deviation, options.refinements);
     a = b;
   }
   return even_by_chord(curve, params.size());

@@ -447,9 +447,11 @@ ShellColumns face_columns(VolumeContext& ctx, const ShellBase& face) {
   std::sort(depths.begin(), depths.end());
   depths.erase(std::unique(depths.begin(), depths.end()), depths.end());
   const int m = ctx.m;
+  SpreadOptions spread;
+  spread.chord_deviation = ctx.options.spread_deviation * ctx.diag;
   return ShellColumns(ctx.probe, ctx.options.stream_step * ctx.diag, &ctx.hint, ctx.params, face.start,
                       [&](int q) { return traced(face, m, q); }, face.fixed_sides,
-                      !ctx.strategy1 && !face.collapsed && !face.ruled, depths);
+                      !ctx.strategy1 && !face.collapsed && !face.ruled, depths, spread);
 }
 
 // The samples of a face's shell block in layer (1..n): the columns cut at

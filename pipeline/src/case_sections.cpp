@@ -109,6 +109,7 @@ void read_decomposition_section(const json& section, const std::string& file, pa
   volume.crest_reach = r.number_in("crest_reach", volume.crest_reach, 0.1, 2.0);
   volume.blend = r.number_in("blend", volume.blend, 0.01, 4.0);
   volume.surface_degree = r.integer("surface_degree", volume.surface_degree, 0, 12);
+  volume.spread_deviation = r.number_in("spread_deviation", volume.spread_deviation, 0.0, 0.1);
   r.refuse_unknown();
 }
 

@@ -125,7 +125,8 @@ void add_stage_options(const Case& c, json& root) {
   root["decomposition"] = {{"inset", c.base.inset}, {"smoothing", c.base.smoothing}, {"sliding_uv", c.base.sliding_uv},
                            {"max_aspect", c.base.max_aspect},
                            {"strategy", v.strategy}, {"theta", v.theta}, {"blend", v.blend},
-                           {"crest_reach", v.crest_reach}, {"surface_degree", v.surface_degree}};
+                           {"crest_reach", v.crest_reach}, {"surface_degree", v.surface_degree},
+                           {"spread_deviation", v.spread_deviation}};
   if (v.w0 >= 0.0) root["decomposition"]["w0"] = v.w0;  // absent: midway, at least 0.75
   root["fit"] = {{"degree", c.fit.degree}, {"elements", c.fit.elements}, {"oversample", c.fit.oversample},
                  {"jacobian_target", c.jacobian.target}, {"jacobian_iterations", c.jacobian.iterations},

@@ -42,6 +42,35 @@ TEST(EvenEndParams, EndsThatAreNotUnevenKeepTheirParameters) {
   EXPECT_EQ(even_end_params(end, p, ends), p);
 }
 
+// Ends evenly spaced along a line with a narrow bump between two of them
+// (a Gaussian of height 0.05 and width 0.01 centred between samples 6 and
+// 7): not uneven, so they stay; with chord_deviation 0.01 the bump is seen
+// from the middle of its gap and samples move onto it. A smooth bend
+// (a quarter circle) is not a bump: the cubic through the ends follows it.
+TEST(EvenEndParams, ABumpBetweenSamplesIsSpreadOnlyWhenAsked) {
+  const std::vector<double> p = uniform(13);
+  const double centre = 0.5 * (p[6] + p[7]);
+  auto end = [&](double s) {
+    const double d = (s - centre) / 0.01;
+    return Eigen::Vector3d(s, 0.05 * std::exp(-d * d), 0.0);
+  };
+  std::vector<Eigen::Vector3d> ends;
+  for (double s : p) ends.push_back(end(s));
+  EXPECT_EQ(even_end_params(end, p, ends), p);
+  igaprep::param::SpreadOptions options;
+  options.chord_deviation = 0.01;
+  const std::vector<double> q = even_end_params(end, p, ends, options);
+  int on_bump = 0;
+  for (double s : q) on_bump += std::abs(s - centre) < 0.02;
+  EXPECT_GE(on_bump, 2) << "samples on the bump";
+  for (std::size_t i = 1; i < q.size(); ++i) EXPECT_GT(q[i], q[i - 1]);
+  auto arc = [](double s) { return Eigen::Vector3d(std::cos(s * 1.5707963), std::sin(s * 1.5707963), 0.0); };
+  std::vector<Eigen::Vector3d> arc_ends;
+  for (double s : p) arc_ends.push_back(arc(s));
+  options.chord_deviation = 1e-4;  // below the chords' sagitta (about 1.1e-3), above the cubic's error
+  EXPECT_EQ(even_end_params(arc, p, arc_ends, options), p);
+}
+
 // Over a face: rows bunched along s (x = s^8) are spread along s; the
 // columns, already even, keep t; the edge rows agree with the edge alone.
 TEST(SpreadFaceParams, RowsAreSpreadAndEdgesDependOnTheirEndsOnly) {

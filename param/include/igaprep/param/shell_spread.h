@@ -20,6 +20,13 @@ struct SpreadOptions {
   // many times its mean gap (the built-in models' rows: at most 2.3; the
   // propeller's hub: up to 8).
   double uneven_ratio = 3.0;
+  // A row is spread as well when the streamline from the middle of a gap
+  // ends farther than this (model units) from the cubic through the four
+  // nearest ends: a part of T1 that bulges out between two samples (a
+  // kitten's ear), which the samples cut off without making the gaps
+  // uneven; gaps are then halved until their middle ends lie this close to
+  // their chords. 0: off.
+  double chord_deviation = 0.0;
   int refinements = 12;  // halvings of a parameter interval, at most
   int per_gap = 4;       // the curve of ends is refined to this many chords per even gap
 };
@@ -38,7 +45,8 @@ ParamCell param_cell(const std::vector<double>& params, double x);
 // params (0 first, 1 last). Output: parameters from 0 to 1 at which the ends
 // are evenly spaced by chord length along the curve (refined adaptively
 // between the given ends), or params itself when the given ends are not
-// uneven (SpreadOptions::uneven_ratio). Deterministic: the same curve and
+// uneven (SpreadOptions::uneven_ratio) and no gap bulges
+// (SpreadOptions::chord_deviation). Deterministic: the same curve and
 // ends give the same parameters, so neighbouring faces that share an edge
 // agree on it.
 std::vector<double> even_end_params(const std::function<Eigen::Vector3d(double)>& end,

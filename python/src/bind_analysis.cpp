@@ -11,6 +11,8 @@
 #include "igaprep/iga_check/elasticity_solve.h"
 #include "igaprep/pipeline/reduce.h"
 
+#include <optional>
+
 namespace igaprep::python {
 
 namespace {
@@ -35,14 +37,34 @@ std::vector<iga_check::FixedSide> fixed_sides(const py::object& fix) {
   return out;
 }
 
+// rotation: None, or {"density", "angular_velocity", "axis" (default z), "point" (default the origin)}.
+std::optional<iga_check::RotationLoad> rotation_load(const py::object& rotation) {
+  if (rotation.is_none()) return std::nullopt;
+  const py::dict d = rotation.cast<py::dict>();
+  iga_check::RotationLoad r;
+  for (auto [k, v] : d) {
+    const std::string key = k.cast<std::string>();
+    if (key == "density") r.density = v.cast<double>();
+    else if (key == "angular_velocity") r.angular_velocity = v.cast<double>();
+    else if (key == "axis") r.axis = v.cast<Eigen::Vector3d>();
+    else if (key == "point") r.point = v.cast<Eigen::Vector3d>();
+    else throw bad_input("rotation: unknown key '" + key + "' (density, angular_velocity, axis, point)");
+  }
+  if (!d.contains("density") || !d.contains("angular_velocity"))
+    throw bad_input("rotation: needs 'density' and 'angular_velocity'");
+  return r;
+}
+
 py::dict solve(const spline::MultiPatch& model, const py::object& fix, const std::map<std::string, double>& pressure,
-               const std::map<std::string, Eigen::Vector3d>& traction, const Eigen::Vector3d& body_force, int refine,
-               const std::string& solver) {
+               const std::map<std::string, Eigen::Vector3d>& traction, const std::map<std::string, Eigen::Vector3d>& force,
+               const Eigen::Vector3d& body_force, const py::object& rotation, int refine, const std::string& solver) {
   iga_check::ElasticityProblem problem;
   problem.fixed = fixed_sides(fix);
   for (const auto& [label, p] : pressure) problem.pressures.push_back({label, p});
   for (const auto& [label, t] : traction) problem.tractions.push_back({label, t});
+  for (const auto& [label, f] : force) problem.forces.push_back({{label}, f});
   problem.body_force = body_force;
+  problem.rotation = rotation_load(rotation);
   iga_check::ElasticityOptions options;
   options.refine = refine;
   if (solver != "cholesky" && solver != "cg") throw bad_input("solver must be 'cholesky' or 'cg', got '" + solver + "'");
@@ -95,9 +117,13 @@ void bind_analysis(py::module_& m) {
   m.def("solve", &solve, py::arg("model"), py::arg("fix") = py::none(),
         py::arg("pressure") = std::map<std::string, double>{},
         py::arg("traction") = std::map<std::string, Eigen::Vector3d>{},
-        py::arg("body_force") = Eigen::Vector3d::Zero().eval(), py::arg("refine") = 0, py::arg("solver") = "cholesky",
+        py::arg("force") = std::map<std::string, Eigen::Vector3d>{},
+        py::arg("body_force") = Eigen::Vector3d::Zero().eval(), py::arg("rotation") = py::none(),
+        py::arg("refine") = 0, py::arg("solver") = "cholesky",
         "Linear elasticity on the model with its materials. fix: labels (all components) or {label: 'xz'};\n"
-        "pressure: {label: p}; traction: {label: (tx, ty, tz)}; body_force per volume. Returns a dict with\n"
+        "pressure: {label: p}; traction: {label: (tx, ty, tz)}; force: {label: (Fx, Fy, Fz)}, a total force\n"
+        "spread over the label's sides; body_force per volume; rotation: {'density', 'angular_velocity',\n"
+        "'axis', 'point'}, the centrifugal body force of a steady spin. Returns a dict with\n"
         "displacements (one (n_w, n_v, n_u, 3) array per patch of the refined model), strain_energy,\n"
         "max_displacement, unknowns, solver and the refined model carrying the displacement.");
   m.def("refine", &iga_check::refine_for_analysis, py::arg("model"), py::arg("elevate") = 0, py::arg("refine") = 1,

@@ -66,6 +66,23 @@ def test_uniaxial_tension_matches_the_exact_solution():
     assert s["max_displacement"] == pytest.approx(np.linalg.norm([nu * t / e, nu * t / e, t / e]), rel=1e-10)
 
 
+def test_total_force_and_rotation_reach_the_solve():
+    # A total force on z1 (area 1) is the traction itself; a spin about z
+    # through the cube's centre gives an energy quadratic in omega^2.
+    t, e = 5.0, 200.0
+    s = igaprep.solve(cube(), fix={"x0": "x", "y0": "y", "z0": "z"}, force={"z1": (0.0, 0.0, t)})
+    assert s["strain_energy"] == pytest.approx(t * t / (2 * e), rel=1e-10)
+    spin = {"density": 2.0, "angular_velocity": 3.0, "axis": (0, 0, 1), "point": (0.5, 0.5, 0.0)}
+    fix = {"x0": "x", "y0": "y", "z0": "z"}
+    e1 = igaprep.solve(cube(), fix=fix, rotation=spin)["strain_energy"]
+    spin["angular_velocity"] = 6.0
+    e2 = igaprep.solve(cube(), fix=fix, rotation=spin)["strain_energy"]
+    assert e1 > 0.0
+    assert e2 == pytest.approx(16.0 * e1, rel=1e-10)
+    with pytest.raises(igaprep.BadInputError, match="rotation: needs 'density' and 'angular_velocity'"):
+        igaprep.solve(cube(), fix=fix, rotation={"density": 1.0})
+
+
 def test_errors_carry_the_library_message():
     with pytest.raises(igaprep.BadInputError, match="unknown label 'top'"):
         igaprep.solve(cube(), fix="top")

@@ -130,12 +130,22 @@ void write_report_and_commit(RunResult& r, OutputFolder* folder) {
 }
 
 // The load case's solve; on failure the report so far is written, then the
-// error goes on (bad input named by the case).
+// error goes on (bad input named by the case). On a model the check did not
+// certify (a folded or degenerate element) it is not solved: the solve would
+// integrate a map that is not one-to-one. Its selections are checked still.
 void run_load_case(const Case& c, Observer& observer, OutputFolder* folder, RunResult& r,
                    std::vector<iga_check::PipelineStage>& stages) {
   StageTimer timer;
   iga_check::PipelineSection& p = *r.report.pipeline;
   try {
+    if (!r.report.failed_patches.empty()) {
+      load_case_labels(r.model, *c.load_case);
+      observer.stage_finished({"load_case", timer.seconds(),
+                               text("not solved: %zu patches have elements the check did not certify positive",
+                                    r.report.failed_patches.size()),
+                               {}});
+      return;
+    }
     const LoadCaseResult lc = load_case_stage(r.model, *c.load_case, observer);
     const auto& rep = lc.solution.report;
     r.load_case = LoadCaseFigures{rep.unknowns, rep.strain_energy, rep.max_displacement};

@@ -187,13 +187,19 @@ TEST(PipelineModels, Torus3MeetsEveryCriterion) {
 // Strategy 1 (no core, the crest volumes are fans collapsed onto M's
 // boundary): completes; the elements on the collapsed sides (4 fans x 6 x 6)
 // are degenerate, none negative, and the collapsed sides are not unmatched.
+// Its load case is not solved on a model with degenerate elements, and says so.
 TEST(PipelineModels, Sphere2Strategy1Completes) {
   Recorder rec;
   const RunResult r = igaprep::pipeline::run(
-      model_case("sphere2", R"({"decomposition": {"strategy": 1}, "validation": {"enabled": false}})",
+      model_case("sphere2", R"({"decomposition": {"strategy": 1}, "validation": {"enabled": false},
+          "load_case": {"fix": {"label": "outer", "box": [[-2, -2, -2], [-0.3, 2, 2]]},
+                        "force": {"label": "outer", "value": [1, 0, 0], "box": [[0.3, -2, -2], [2, 2, 2]]}}})",
                  "sphere2_strategy1"),  // its own folder: ctest runs the tests in parallel
       rec,
       {"", false});
+  EXPECT_FALSE(r.load_case);
+  ASSERT_EQ(rec.stages.back().stage, "load_case");
+  EXPECT_EQ(rec.stages.back().headline.rfind("not solved: ", 0), 0u) << rec.stages.back().headline;
   EXPECT_NE(rec.stages.at(4).headline.find("strategy 1"), std::string::npos) << rec.stages.at(4).headline;
   EXPECT_EQ(figure(r, "degenerate_elements"), 4 * 6 * 6);
   EXPECT_EQ(figure(r, "negative_elements"), 0.0);

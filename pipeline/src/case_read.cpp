@@ -130,6 +130,23 @@ void for_each_entry(const json& v, const std::string& key, F read) {
   }
 }
 
+// Entries {"label", "box", "value": [x, y, z]} (CaseTraction, CaseForce);
+// `what` says in an error what the value is.
+template <class Load>
+void read_vector_loads(const json& v, const std::string& key, const std::string& what, const std::string& file,
+                       std::vector<Load>& out) {
+  for_each_entry(v, key, [&](const json& e, const std::string& where) {
+    ObjectReader er(e, where, file);
+    Load load;
+    load.where = read_selection(er, file);
+    const json* value = er.find("value");
+    if (!value) er.fail("missing key '" + er.path("value") + "' (" + what + ")");
+    load.value = read_vector3(*value, er.path("value"), file);
+    er.refuse_unknown();
+    out.push_back(load);
+  });
+}
+
 // "rotation": {"density", "angular_velocity", "axis" (default z), "point"
 // (default the origin)}.
 iga_check::RotationLoad read_rotation(const json& v, const std::string& file) {
@@ -179,28 +196,9 @@ CaseLoadCase read_load_case(const json& v, const std::string& file) {
       er.refuse_unknown();
       lc.pressure.push_back(cp);
     });
-  if (const json* t = r.find("traction"))
-    for_each_entry(*t, "load_case.traction", [&](const json& e, const std::string& where) {
-      ObjectReader er(e, where, file);
-      CaseTraction ct;
-      ct.where = read_selection(er, file);
-      const json* value = er.find("value");
-      if (!value) er.fail("missing key '" + er.path("value") + "' ([tx, ty, tz])");
-      ct.value = read_vector3(*value, er.path("value"), file);
-      er.refuse_unknown();
-      lc.traction.push_back(ct);
-    });
+  if (const json* t = r.find("traction")) read_vector_loads(*t, "load_case.traction", "[tx, ty, tz]", file, lc.traction);
   if (const json* f = r.find("force"))
-    for_each_entry(*f, "load_case.force", [&](const json& e, const std::string& where) {
-      ObjectReader er(e, where, file);
-      CaseForce cf;
-      cf.where = read_selection(er, file);
-      const json* value = er.find("value");
-      if (!value) er.fail("missing key '" + er.path("value") + "' ([Fx, Fy, Fz], the total force)");
-      cf.value = read_vector3(*value, er.path("value"), file);
-      er.refuse_unknown();
-      lc.force.push_back(cf);
-    });
+    read_vector_loads(*f, "load_case.force", "[Fx, Fy, Fz], the total force", file, lc.force);
   if (const json* b = r.find("body_force")) lc.body_force = read_vector3(*b, "load_case.body_force", file);
   if (const json* rot = r.find("rotation")) lc.rotation = read_rotation(*rot, file);
   lc.refine = r.integer("refine", lc.refine, 0, 4);

@@ -1,5 +1,7 @@
 #include "igaprep/core/allocator.h"
 
+#include <cstdlib>  // defines __GLIBC__ on glibc (features.h); tested before it was, the body compiled to nothing
+
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif

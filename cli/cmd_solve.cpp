@@ -1,6 +1,6 @@
 // igaprep solve MODEL.h5 -o RESULT.h5 [--fix LABEL[:COMPONENTS]]...
-// [--pressure LABEL=P]... [--traction LABEL=TX,TY,TZ]... [--body-force FX,FY,FZ]
-// [--refine N] [--elevate K] [--solver cholesky|cg]: linear elasticity on the
+// [--pressure LABEL=P]... [--traction LABEL=TX,TY,TZ]... [--force LABEL=FX,FY,FZ]...
+// [--body-force FX,FY,FZ] [--rotation DENSITY,OMEGA[,AX,AY,AZ[,PX,PY,PZ]]] [--refine N] [--elevate K] [--solver cholesky|cg]: linear elasticity on the
 // model (docs/elasticity-solver.md); RESULT.h5 is the refined model plus the
 // displacement per patch and the root attributes strain_energy and
 // max_displacement. Bad input: error, exit 1, nothing written.
@@ -23,8 +23,8 @@ namespace igaprep::cli {
 namespace {
 
 struct SolveArgs {
-  std::string model, output, body_force, solver = "cholesky";
-  std::vector<std::string> fix, pressure, traction;
+  std::string model, output, body_force, rotation, solver = "cholesky";
+  std::vector<std::string> fix, pressure, traction, force;
   int refine = 0, elevate = 0;
   long long max_unknowns = iga_check::ElasticityOptions{}.max_unknowns;
 };
@@ -39,13 +39,33 @@ double parse_number(const std::string& s, const std::string& what) {
   throw bad_input(what + ": '" + s + "' is not a finite number");
 }
 
-Eigen::Vector3d parse_vector(const std::string& s, const std::string& what) {
-  std::vector<std::string> parts;
+// Comma-separated numbers; empty items (a trailing comma) are refused.
+std::vector<double> parse_numbers(const std::string& s, const std::string& what) {
+  std::vector<double> out;
   std::stringstream ss(s);
   std::string item;
-  while (std::getline(ss, item, ',')) parts.push_back(item);
-  if (parts.size() != 3 || s.back() == ',') throw bad_input(what + ": expected three numbers X,Y,Z, got '" + s + "'");
-  return Eigen::Vector3d(parse_number(parts[0], what), parse_number(parts[1], what), parse_number(parts[2], what));
+  while (std::getline(ss, item, ',')) out.push_back(parse_number(item, what));
+  if (!s.empty() && s.back() == ',') throw bad_input(what + ": '" + s + "' ends with a comma");
+  return out;
+}
+
+Eigen::Vector3d parse_vector(const std::string& s, const std::string& what) {
+  const std::vector<double> v = parse_numbers(s, what);
+  if (v.size() != 3) throw bad_input(what + ": expected three numbers X,Y,Z, got '" + s + "'");
+  return Eigen::Vector3d(v[0], v[1], v[2]);
+}
+
+// DENSITY,OMEGA[,AX,AY,AZ[,PX,PY,PZ]]: axis z and the origin by default.
+iga_check::RotationLoad parse_rotation(const std::string& s) {
+  const std::vector<double> v = parse_numbers(s, "--rotation");
+  if (v.size() != 2 && v.size() != 5 && v.size() != 8)
+    throw bad_input("--rotation: expected DENSITY,OMEGA[,AX,AY,AZ[,PX,PY,PZ]] (2, 5 or 8 numbers), got '" + s + "'");
+  iga_check::RotationLoad r;
+  r.density = v[0];
+  r.angular_velocity = v[1];
+  if (v.size() >= 5) r.axis = Eigen::Vector3d(v[2], v[3], v[4]);
+  if (v.size() == 8) r.point = Eigen::Vector3d(v[5], v[6], v[7]);
+  return r;
 }
 
 // LABEL[:COMPONENTS], COMPONENTS letters of xyz or "all"; no suffix = all.
@@ -90,7 +110,12 @@ int run_solve(const SolveArgs& a) {
     const auto [label, value] = split_assignment(s, "--traction");
     problem.tractions.push_back({label, parse_vector(value, "--traction " + label)});
   }
+  for (const auto& s : a.force) {
+    const auto [label, value] = split_assignment(s, "--force");
+    problem.forces.push_back({{label}, parse_vector(value, "--force " + label)});
+  }
   if (!a.body_force.empty()) problem.body_force = parse_vector(a.body_force, "--body-force");
+  if (!a.rotation.empty()) problem.rotation = parse_rotation(a.rotation);
   iga_check::ElasticityOptions options;
   options.refine = a.refine;
   options.elevate = a.elevate;
@@ -134,7 +159,10 @@ void add_solve_command(CLI::App& app) {
       ->allow_extra_args(false);
   sub->add_option("--traction", args->traction, "Constant traction on a labelled boundary: LABEL=TX,TY,TZ")
       ->allow_extra_args(false);
+  sub->add_option("--force", args->force, "Total force spread over a labelled boundary: LABEL=FX,FY,FZ");
   sub->add_option("--body-force", args->body_force, "Body force per volume: FX,FY,FZ");
+  sub->add_option("--rotation", args->rotation,
+                  "Centrifugal load of a steady spin: DENSITY,OMEGA[,AX,AY,AZ[,PX,PY,PZ]] (axis z through the origin by default)");
   sub->add_option("--refine", args->refine, "Uniform h-refinement levels (each bisects every knot span)")
       ->check(CLI::Range(0, 10));
   sub->add_option("--elevate", args->elevate, "Degree elevation in every direction")->check(CLI::Range(0, 10));

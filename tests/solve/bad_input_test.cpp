@@ -229,6 +229,21 @@ TEST_F(SolveCli, ResultFileCarriesTheSolution) {
   }
 }
 
+// The total force and the spin on the command line solve as through the
+// library: the bar's end carries 2 N in y (area 1), the bar spins about x.
+TEST_F(SolveCli, ForceAndRotationAreTheLibrarysLoads) {
+  const std::string out = (dir_ / "loads.h5").string();
+  ASSERT_EQ(run("--fix base --force end=0,2,0 --rotation 0.5,3,1,0,0,0,0.5,0.5", out), 0) << log();
+  iga_check::ElasticityProblem problem;
+  problem.fixed = {{"base", {{true, true, true}}}};
+  problem.forces = {{{"end"}, Eigen::Vector3d(0, 2, 0)}};
+  problem.rotation = iga_check::RotationLoad{0.5, 3.0, Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 0.5, 0.5)};
+  const auto direct = iga_check::solve_elasticity(two_box_bar(2), problem);
+  const MultiPatch r = exporter::read_hdf5_model(out);
+  EXPECT_NEAR(r.strain_energy, direct.report.strain_energy, 1e-12 * direct.report.strain_energy);
+  EXPECT_GT(direct.report.strain_energy, 0.0);
+}
+
 // Issue 21, item 2: `solve b.h5 -o b.h5` refuses and keeps the model.
 TEST_F(SolveCli, AnOutputThatIsTheModelIsRefused) {
   const auto before = fs::file_size(model_);
@@ -258,6 +273,10 @@ TEST_F(SolveCli, BadInputExitsOneAndWritesNothing) {
       "--fix base --pressure end=abc",       // not a number
       "--fix base --traction end=1,2",       // two components
       "--fix base --solver lu",              // unknown solver
+      "--fix base --force end=1,0",          // two components
+      "--fix base --rotation 1",             // one number
+      "--fix base --rotation 1,2,0,0,0",     // zero axis
+      "--fix base --traction end=1,0,0,",    // trailing comma
       "--fix base --fix end:x --traction end=1,0,0 --refine 11",  // out of range
   };
   for (const auto& args : bad) {

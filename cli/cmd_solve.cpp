@@ -1,6 +1,7 @@
 // igaprep solve MODEL.h5 -o RESULT.h5 [--fix LABEL[:COMPONENTS]]...
 // [--pressure LABEL=P]... [--traction LABEL=TX,TY,TZ]... [--force LABEL=FX,FY,FZ]...
-// [--body-force FX,FY,FZ] [--rotation DENSITY,OMEGA[,AX,AY,AZ[,PX,PY,PZ]]] [--refine N] [--elevate K] [--solver cholesky|cg]: linear elasticity on the
+// [--body-force FX,FY,FZ] [--rotation DENSITY,OMEGA[,AX,AY,AZ[,PX,PY,PZ]]]
+// [--refine N] [--elevate K] [--solver cholesky|cg]: linear elasticity on the
 // model (docs/elasticity-solver.md); RESULT.h5 is the refined model plus the
 // displacement per patch and the root attributes strain_energy and
 // max_displacement. Bad input: error, exit 1, nothing written.

@@ -59,26 +59,22 @@ void add_surface_load(const spline::MultiPatch& mp, const std::vector<PatchTable
       [] {});
 }
 
-// The summed area of the sides with these labels, by the loads' quadrature.
-double labelled_area(const spline::MultiPatch& mp, const std::vector<PatchTables>& tables,
-                     const std::vector<std::string>& labels) {
-  double area = 0.0;
-  for (const auto& l : labels)
-    for (const auto& b : sides_with_label(mp, l, "force load"))
-      for_side_points(
-          mp.patches[b.patch], b.side, tables[b.patch],
-          [&](const ElementValues&, Eigen::Index, const Eigen::Vector3d&, double dA) { area += dA; }, [] {});
-  return area;
-}
-
-// A total force as the constant traction force / area on its sides.
+// A total force as the constant traction force / area on its sides, the
+// area summed by the loads' own quadrature.
 void add_force_load(const spline::MultiPatch& mp, const std::vector<PatchTables>& tables, const ElasticityDofs& dofs,
                     const ForceLoad& fl, Eigen::VectorXd& F) {
-  const double area = labelled_area(mp, tables, fl.labels);
+  std::vector<spline::BoundarySide> sides;
+  for (const auto& l : fl.labels) {
+    const std::vector<spline::BoundarySide> of_label = sides_with_label(mp, l, "force load");
+    sides.insert(sides.end(), of_label.begin(), of_label.end());
+  }
+  double area = 0.0;
+  for (const auto& b : sides)
+    for_side_points(
+        mp.patches[b.patch], b.side, tables[b.patch],
+        [&](const ElementValues&, Eigen::Index, const Eigen::Vector3d&, double dA) { area += dA; }, [] {});
   if (!(area > 0.0)) throw bad_input("force load on '" + fl.labels.front() + "': its sides have no area");
-  for (const auto& l : fl.labels)
-    for (const auto& b : sides_with_label(mp, l, "force load"))
-      add_surface_load(mp, tables, dofs, b, fl.force / area, 0.0, F);
+  for (const auto& b : sides) add_surface_load(mp, tables, dofs, b, fl.force / area, 0.0, F);
 }
 
 }  // namespace

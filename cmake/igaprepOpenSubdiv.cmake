@@ -1,9 +1,7 @@
-# OpenSubdiv 3.5 (libosd-dev), a required dependency of the project for the
-# T-spline / T-NURCC work in spline/ (ARCHITECTURE.md). No module uses it
-# yet, so nothing links igaprep_dep_osd and the installed package config
-# does not look for it; the first module that uses it links it and moves
-# this block into igaprepDependencies.cmake (a static library's link
-# dependencies reach its consumers).
+# OpenSubdiv 3.5 (libosd-dev): the limit surfaces of spline/'s T-NURCCs.
+# Used inside spline/src only: spline links this target in the build and,
+# installed, the shared library alone (spline/CMakeLists.txt), so the
+# installed package config does not look for OpenSubdiv.
 # Debian's OpenSubdivConfig.cmake names static libraries that are not
 # installed, so the shared CPU library is found by hand.
 if(NOT TARGET igaprep_dep_osd)

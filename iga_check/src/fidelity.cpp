@@ -1,10 +1,5 @@
 #include "igaprep/iga_check/fidelity.h"
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Simple_cartesian.h>
-
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -17,18 +12,16 @@
 #include "igaprep/spline/curve_surface.h"
 #include "igaprep/spline/evaluate.h"
 #include "igaprep/spline/knot_vector.h"
+#include "surface_distance.h"
 
 namespace igaprep::iga_check {
 
 namespace {
 
-using K = CGAL::Simple_cartesian<double>;
-using Triangles = std::vector<K::Triangle_3>;
-using Primitive = CGAL::AABB_triangle_primitive<K, Triangles::const_iterator>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
-
-K::Point_3 pt(const Eigen::Vector3d& x) { return K::Point_3(x[0], x[1], x[2]); }
-Eigen::Vector3d vec(const K::Point_3& p) { return Eigen::Vector3d(p.x(), p.y(), p.z()); }
+using detail::pt;
+using detail::summarize;
+using detail::Tree;
+using detail::Triangles;
 
 // n points per element in each direction, shared element ends once.
 std::vector<double> element_grid(const std::vector<double>& U, int n) {
@@ -37,28 +30,6 @@ std::vector<double> element_grid(const std::vector<double>& U, int n) {
   for (size_t e = 0; e + 1 < brk.size(); ++e)
     for (int i = (e == 0 ? 0 : 1); i < n; ++i) out.push_back(brk[e] + (brk[e + 1] - brk[e]) * i / (n - 1));
   return out;
-}
-
-DistanceStats summarize(std::vector<double> d, const std::vector<Eigen::Vector3d>& where, double diag) {
-  DistanceStats s;
-  s.samples = static_cast<long>(d.size());
-  if (d.empty()) return s;
-  size_t arg = 0;
-  double sum = 0.0;
-  for (size_t i = 0; i < d.size(); ++i) {
-    sum += d[i];
-    if (d[i] > d[arg]) arg = i;
-  }
-  s.max = d[arg];
-  s.max_location = where[arg];
-  s.mean = sum / d.size();
-  std::sort(d.begin(), d.end());
-  const size_t k = static_cast<size_t>(std::ceil(0.95 * d.size())) - 1;
-  s.p95 = d[std::min(k, d.size() - 1)];
-  s.max_relative = s.max / diag;
-  s.mean_relative = s.mean / diag;
-  s.p95_relative = s.p95 / diag;
-  return s;
 }
 
 struct Face {
@@ -187,10 +158,7 @@ std::vector<SurfaceFidelity> fidelity(const spline::MultiPatch& mp, const std::v
     if (tm.F.rows() == 0) throw bad_input("fidelity: input surface " + std::to_string(si) + " has no triangles");
 
     // spline -> mesh
-    Triangles mesh_tris;
-    mesh_tris.reserve(tm.F.rows());
-    for (int f = 0; f < tm.F.rows(); ++f)
-      mesh_tris.emplace_back(pt(tm.V.row(tm.F(f, 0))), pt(tm.V.row(tm.F(f, 1))), pt(tm.V.row(tm.F(f, 2))));
+    const Triangles mesh_tris = detail::mesh_triangles(tm.V, tm.F);
     Tree mesh_tree(mesh_tris.begin(), mesh_tris.end());
     mesh_tree.accelerate_distance_queries();
     std::vector<double> d1;
@@ -243,17 +211,9 @@ std::vector<SurfaceFidelity> fidelity(const spline::MultiPatch& mp, const std::v
       const Eigen::Vector3d x = tm.V.row(v).transpose();
       const auto hit = tess_tree.closest_point_and_primitive(pt(x));
       const size_t t = static_cast<size_t>(hit.second - tess.cbegin());
-      const K::Triangle_3& tri = tess[t];
       // Barycentric coordinates of the closest point give the parameter guess.
-      const Eigen::Vector3d a = vec(tri[0]), b = vec(tri[1]), c = vec(tri[2]), q = vec(hit.first);
-      const Eigen::Vector3d e0 = b - a, e1 = c - a, r = q - a;
-      const double d00 = e0.dot(e0), d01 = e0.dot(e1), d11 = e1.dot(e1), d20 = r.dot(e0), d21 = r.dot(e1);
-      const double den = d00 * d11 - d01 * d01;
-      double s = 0.0, u = 0.0;
-      if (den > 0.0) {
-        s = (d11 * d20 - d01 * d21) / den;
-        u = (d00 * d21 - d01 * d20) / den;
-      }
+      const Eigen::Vector2d bc = detail::barycentric(tess[t], hit.first);
+      const double s = bc[0], u = bc[1];
       const auto& uvs = tess_uv[t].second;
       const Eigen::Vector2d guess = (1.0 - s - u) * uvs[0] + s * uvs[1] + u * uvs[2];
       const double dist = project(faces[tess_uv[t].first], x, guess, options.newton_iterations);

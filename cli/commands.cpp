@@ -21,6 +21,7 @@ void add_solve_command(CLI::App& app);
 void add_tspline_command(CLI::App& app);
 void add_midsurface_command(CLI::App& app);
 void add_reduce_command(CLI::App& app);
+void add_tnurcc_command(CLI::App& app);
 
 namespace {
 std::map<CLI::App*, CommandBody>& bodies() {
@@ -81,6 +82,7 @@ void register_commands(CLI::App& app) {
   add_reduce_command(app);
   add_solve_command(app);
   add_tspline_command(app);
+  add_tnurcc_command(app);
 }
 
 int run_selected(CLI::App& app) {

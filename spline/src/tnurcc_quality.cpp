@@ -90,12 +90,12 @@ NormalJumps model_normal_jumps(const MultiPatch& mp, const Cage& cage, int sampl
   return j;
 }
 
-NormalJumps limit_normal_jumps(const Cage& cage, int samples, bool only_patch_edges, const LimitOptions& options) {
+NormalJumps limit_normal_jumps(const Cage& cage, JumpEdges edges, int samples, const LimitOptions& options) {
   // Two locations per sample: on the edge's first face, and the same place on its second.
   std::vector<LimitLocation> at;
   for (const auto& e : cage.edges) {
-    if (e.sharpness > 0.0 || e.faces[1] < 0) continue;
-    if (only_patch_edges && !joins_two_sides(cage, e)) continue;
+    if (e.faces[1] < 0 || (e.sharpness > 0.0) != (edges == JumpEdges::creases)) continue;
+    if (edges == JumpEdges::smooth_patch_edges && !joins_two_sides(cage, e)) continue;
     const int f = e.faces[0], g = e.faces[1];
     const int kf = corner_of(cage, f, e.vertices[0]), kg = corner_of(cage, g, e.vertices[1]);
     // Each face runs the edge from one of its corners: f from vertices[0] or to it.

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "igaprep/spline/tnurcc_limit.h"
+#include "igaprep/spline/tnurcc_quality.h"
 #include "tnurcc/tnurcc_models.h"
 
 namespace {
@@ -115,6 +116,43 @@ TEST(TnurccLimit, NeighbouringFacesAgreeOnTheirEdgeAroundExtraordinaryVertices) 
     }
   EXPECT_GT(top, 0);
   EXPECT_EQ(up, top);
+}
+
+}  // namespace
+
+namespace {
+
+using namespace igaprep::spline;
+
+TEST(TnurccQuality, CreasesKeepTheBoxsRightAnglesAndTheRestIsSmooth) {
+  const MultiPatch mp = tnurcc_test::boxes(1, 3);
+  const Cage c = surface_cage(mp, 0);
+  const NormalJumps creases = limit_normal_jumps(c, JumpEdges::creases);
+  EXPECT_EQ(creases.points, 12 * 5 * 3);  // 12 box edges of 5 cage edges, 3 samples each
+  EXPECT_NEAR(creases.max, 90.0, 1e-9);
+  EXPECT_NEAR(creases.mean, 90.0, 1e-9);
+  EXPECT_LT(creases.max_gap, 1e-12);
+  const NormalJumps smooth = limit_normal_jumps(c, JumpEdges::smooth);
+  EXPECT_GT(smooth.points, 0);
+  EXPECT_LT(smooth.max, 1e-9);
+  // The C0 model: its patch sides meet at the box's edges only, all creases.
+  EXPECT_EQ(model_normal_jumps(mp, c).points, 0);
+}
+
+TEST(TnurccQuality, ModelJumpMeasuresTheKinkBetweenTwoPatches) {
+  // Two boxes, the second's top raised along x: the outer surface kinks at x = 1.
+  MultiPatch mp = tnurcc_test::boxes(2, 2);
+  for (int r = 0; r < mp.patches[1].control_points.rows(); ++r) {
+    auto p = mp.patches[1].control_points.row(r);
+    p[2] += 0.2 * (p[0] - 1.0) * p[2];  // z scaled by 1 + 0.2 (x - 1): the top turns by atan(0.2)
+  }
+  CageOptions o;
+  o.crease_angle = 45.0;
+  const Cage c = surface_cage(mp, 0, o);
+  const NormalJumps j = model_normal_jumps(mp, c);
+  EXPECT_NEAR(j.max, std::atan(0.2) * 180 / M_PI, 1e-9);
+  EXPECT_LT(j.max_gap, 1e-14);
+  EXPECT_LT(limit_normal_jumps(c, JumpEdges::smooth_patch_edges).max, 1e-9);
 }
 
 }  // namespace

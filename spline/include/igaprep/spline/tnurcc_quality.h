@@ -25,10 +25,15 @@ struct NormalJumps {
 // on the same model.
 NormalJumps model_normal_jumps(const MultiPatch& mp, const Cage& cage, int samples = 3);
 
-// The limit surface's normals from the two faces of each edge, at `samples`
-// points along it. `only_patch_edges`: the edges that join two patch sides
-// (the ones model_normal_jumps measures) rather than every edge.
-NormalJumps limit_normal_jumps(const Cage& cage, int samples = 3, bool only_patch_edges = false,
-                               const LimitOptions& options = {});
+// Which cage edges limit_normal_jumps measures.
+enum class JumpEdges {
+  smooth,              // every edge that is not a crease
+  smooth_patch_edges,  // those of them that join two patch sides (where model_normal_jumps measures)
+  creases,             // the creases alone
+};
+
+// The limit surface's normals from the two faces of each chosen edge, at
+// `samples` points along it.
+NormalJumps limit_normal_jumps(const Cage& cage, JumpEdges edges, int samples = 3, const LimitOptions& options = {});
 
 }  // namespace igaprep::spline

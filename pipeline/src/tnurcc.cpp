@@ -1,0 +1,147 @@
+#include "igaprep/pipeline/tnurcc.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+
+#include "igaprep/core/atomic_file.h"
+#include "igaprep/core/error.h"
+#include "igaprep/core/text.h"
+#include "igaprep/export/tnurcc_files.h"
+#include "igaprep/mesh/sharp_edges.h"
+#include "igaprep/spline/tnurcc_fit.h"
+
+namespace igaprep::pipeline {
+namespace {
+
+bool stands_for(const spline::MultiPatch& mp, int label) {
+  for (const auto& b : mp.boundaries)
+    if (b.label == label) return true;
+  for (const auto& itf : mp.interfaces)
+    if (itf.surface == label) return true;
+  return false;
+}
+
+std::vector<int> labels_to_build(const spline::MultiPatch& mp, const TnurccSettings& s) {
+  if (!s.labels.empty()) return s.labels;
+  std::vector<int> out;
+  for (int l = 0; l < static_cast<int>(mp.labels.size()); ++l)
+    if (stands_for(mp, l)) out.push_back(l);
+  return out;
+}
+
+double segment_distance(const Eigen::Vector3d& p, const std::array<Eigen::Vector3d, 2>& s) {
+  const Eigen::Vector3d d = s[1] - s[0];
+  const double t = d.squaredNorm() > 0 ? std::clamp((p - s[0]).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+  return (p - (s[0] + t * d)).norm();
+}
+
+// A crease of the model's cage stays a crease only where the input mesh is
+// sharp too (within two of its edge lengths): the fitted model also turns
+// at its layout's corners, where the input is smooth.
+void keep_creases_of_the_input(spline::Cage& cage, const mesh::TriMesh& mesh, double angle) {
+  const auto sharp = mesh::sharp_edges(mesh, angle);
+  for (auto& e : cage.edges) {
+    if (e.sharpness <= 0.0) continue;
+    const Eigen::Vector3d a = cage.points.row(e.vertices[0]), b = cage.points.row(e.vertices[1]);
+    const Eigen::Vector3d mid = 0.5 * (a + b);
+    const double radius = 2.0 * (b - a).norm();
+    bool near = false;
+    for (const auto& s : sharp)
+      if (segment_distance(mid, s) <= radius) {
+        near = true;
+        break;
+      }
+    if (!near) e.sharpness = 0.0;
+  }
+}
+
+void fit_to_mesh(TnurccSurface& s, const spline::MultiPatch& mp, const mesh::TriMesh& mesh,
+                 const TnurccSettings& settings) {
+  iga_check::LimitFidelityOptions fo;
+  fo.samples_per_face = settings.samples_per_face;
+  keep_creases_of_the_input(s.cage, mesh, settings.crease_angle);
+  if (settings.fit_iterations > 0) {
+    spline::CageFitOptions options;
+    options.iterations = settings.fit_iterations;
+    const spline::CageFitResult r = spline::fit_cage(
+        s.cage, [&](const spline::Cage& c) { return iga_check::limit_mesh_pairs(c, mesh, fo); }, options);
+    s.cage = r.cage;
+    s.fit_rms = r.rms;
+  }
+  s.diagonal = iga_check::mesh_diagonal(mesh);
+  s.limit_fidelity = iga_check::limit_fidelity(s.cage, mesh, s.diagonal, fo);
+  std::vector<mesh::TriMesh> only(s.label + 1);
+  only[s.label] = mesh;
+  for (auto& f : iga_check::fidelity(mp, only, s.diagonal))
+    if (f.surface == s.label) s.model_fidelity = std::move(f);
+}
+
+StageSummary summary(const TnurccSurface& s, double seconds) {
+  StageSummary out;
+  out.stage = "tnurcc";
+  out.seconds = seconds;
+  out.headline = text("'%s': cage of %ld points, %zu faces, %d extraordinary vertices, %d crease edges",
+                      s.name.c_str(), static_cast<long>(s.cage.points.rows()), s.cage.faces.size(),
+                      s.extraordinary_vertices, s.crease_edges);
+  if (!s.fit_rms.empty())
+    out.details.push_back(text("fit: %zu iterations, rms distance %.3g -> %.3g", s.fit_rms.size() - 1,
+                               s.fit_rms.front(), s.fit_rms.back()));
+  if (s.limit_fidelity && s.model_fidelity)
+    out.details.push_back(text("fidelity (max both ways, %% of the diagonal): limit surface %.3f %% / %.3f %%, "
+                               "C0 model %.3f %% / %.3f %%",
+                               100 * s.limit_fidelity->limit_to_mesh.max_relative,
+                               100 * s.limit_fidelity->mesh_to_limit.max_relative,
+                               100 * s.model_fidelity->spline_to_mesh.max_relative,
+                               100 * s.model_fidelity->mesh_to_spline.max_relative));
+  out.details.push_back(text("normal jump across patch edges (max, degrees): C0 model %.3g, limit surface %.3g "
+                             "(%.3g over every cage edge)",
+                             s.model_jumps.max, s.limit_jumps_patch_edges.max, s.limit_jumps.max));
+  return out;
+}
+
+}  // namespace
+
+std::vector<TnurccSurface> tnurcc_surfaces(const spline::MultiPatch& mp, const std::vector<mesh::TriMesh>& meshes,
+                                           const TnurccSettings& settings, Observer& observer) {
+  spline::CageOptions cage_options;
+  cage_options.crease_angle = settings.crease_angle;
+  std::vector<TnurccSurface> out;
+  for (int label : labels_to_build(mp, settings)) {
+    const auto start = std::chrono::steady_clock::now();
+    TnurccSurface s;
+    s.label = label;
+    s.cage = spline::surface_cage(mp, label, cage_options);
+    s.name = mp.labels[label];
+    for (int v : spline::vertex_valences(s.cage)) s.extraordinary_vertices += v != 4;
+    s.model_jumps = spline::model_normal_jumps(mp, s.cage);  // on the model's own cage: it orients the sides
+    if (label < static_cast<int>(meshes.size()) && meshes[label].F.rows() > 0)
+      fit_to_mesh(s, mp, meshes[label], settings);
+    for (const auto& e : s.cage.edges) s.crease_edges += e.sharpness > 0.0;
+    s.limit_jumps_patch_edges = spline::limit_normal_jumps(s.cage, spline::JumpEdges::smooth_patch_edges);
+    s.limit_jumps = spline::limit_normal_jumps(s.cage, spline::JumpEdges::smooth);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    observer.stage_finished(summary(s, seconds));
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+std::vector<std::string> write_tnurcc(const std::vector<TnurccSurface>& surfaces, const std::string& dir,
+                                      const TnurccSettings& settings) {
+  create_output_folder(dir);
+  std::vector<std::string> written;
+  for (const auto& s : surfaces) {
+    const std::string stem = (std::filesystem::path(dir) / (s.name.empty() ? text("label%d", s.label) : s.name)).string();
+    write_file_atomically(stem + "_cage.obj", [&](std::ostream& o) { exporter::write_cage_obj(s.cage, o); });
+    write_file_atomically(stem + "_intervals.json", [&](std::ostream& o) { exporter::write_cage_intervals(s.cage, o); });
+    write_file_atomically(
+        stem + "_limit.vtu", [&](std::ostream& o) { exporter::write_limit_vtu(s.cage, settings.vtu_per_face, o); },
+        true);
+    for (const char* end : {"_cage.obj", "_intervals.json", "_limit.vtu"}) written.push_back(stem + end);
+  }
+  return written;
+}
+
+}  // namespace igaprep::pipeline

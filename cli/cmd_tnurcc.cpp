@@ -68,7 +68,7 @@ void add_tnurcc_command(CLI::App& app) {
   sub->add_option("--fit", args->fit, "Fit the cage to this mesh (the surface's input; label 0 without --surface)")
       ->check(CLI::ExistingFile);
   sub->add_option("--crease-angle", args->settings.crease_angle,
-                  "Patch edges where the model turns by more than this many degrees become creases")
+                  "Patch edges where the model (and the --fit mesh) turn by more than this many degrees become creases")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 180.0));
   sub->add_option("--iterations", args->settings.fit_iterations, "Fit iterations (closest points, then least squares)")

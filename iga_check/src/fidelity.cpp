@@ -124,6 +124,7 @@ std::vector<SurfaceFidelity> fidelity(const spline::MultiPatch& mp, const std::v
   if (!(diagonal > 0.0)) throw bad_input("fidelity: the model has no extent");
   std::vector<SurfaceFidelity> out;
   for (size_t si = 0; si < surfaces.size(); ++si) {
+    if (options.only_surface >= 0 && static_cast<int>(si) != options.only_surface) continue;
     const mesh::TriMesh& tm = surfaces[si];
     SurfaceFidelity sf;
     sf.surface = static_cast<int>(si);

@@ -74,7 +74,9 @@ void fit_to_mesh(TnurccSurface& s, const spline::MultiPatch& mp, const mesh::Tri
   s.limit_fidelity = iga_check::limit_fidelity(s.cage, mesh, s.diagonal, fo);
   std::vector<mesh::TriMesh> only(s.label + 1);
   only[s.label] = mesh;
-  for (auto& f : iga_check::fidelity(mp, only, s.diagonal))
+  iga_check::FidelityOptions alone;
+  alone.only_surface = s.label;
+  for (auto& f : iga_check::fidelity(mp, only, s.diagonal, alone))
     if (f.surface == s.label) s.model_fidelity = std::move(f);
 }
 

@@ -22,6 +22,7 @@ struct FidelityOptions {
   int samples_per_element = 9;       // per direction, per face element (ends included)
   int tessellation_per_element = 8;  // quads per direction, per face element
   int newton_iterations = 20;
+  int only_surface = -1;  // >= 0: measure that surface alone (the others' meshes may be empty)
 };
 
 struct DistanceStats {

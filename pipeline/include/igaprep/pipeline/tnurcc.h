@@ -20,7 +20,7 @@ namespace igaprep::pipeline {
 
 struct TnurccSettings {
   std::vector<int> labels;     // the surfaces to build; empty: every label a patch side stands for
-  double crease_angle = 30.0;  // degrees (spline::CageOptions)
+  double crease_angle = 60.0;  // degrees: the model's nets and the input mesh turn more at a crease
   int fit_iterations = 8;      // 0: the cage as the model gives it, not fitted
   int samples_per_face = 4;    // fit and fidelity (iga_check::LimitFidelityOptions)
   int vtu_per_face = 6;        // quads per cage face and direction in limit.vtu

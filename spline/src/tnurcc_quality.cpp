@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "igaprep/spline/curve_surface.h"
 #include "igaprep/spline/evaluate.h"
 #include "igaprep/spline/knot_vector.h"
 
@@ -42,29 +41,30 @@ int corner_of(const Cage& cage, int f, int v) {
 
 // A point of the side surface of face f at fraction a from vertex `from` to
 // vertex `to` (both corners of f), between their Greville abscissae, with
-// the surface's normal turned like the face.
+// the surface's normal turned out of the patch (against the patch's
+// derivative into its interior, so a folded cage face cannot turn it).
 struct SidePoint {
   Eigen::Vector3d x, normal;
 };
 SidePoint side_point(const MultiPatch& mp, const Cage& cage, int f, int from, int to, double a) {
   const CageFaceOrigin& o = cage.origin[f];
   const Patch& p = mp.patches[o.patch];
-  const Surface s = boundary_surface(p, o.side);
+  const auto td = o.side.tangent_directions();
+  const int d = o.side.direction();
   const auto& n0 = o.net[corner_of(cage, f, from)];
   const auto& n1 = o.net[corner_of(cage, f, to)];
-  Eigen::Vector2d uv;
-  for (int d = 0; d < 2; ++d) {
-    const std::vector<double> g = greville_abscissae(s.knots[d], s.degrees[d]);
-    uv[d] = (1.0 - a) * g[n0[d]] + a * g[n1[d]];
+  Eigen::Vector3d uvw;
+  for (int k = 0; k < 2; ++k) {
+    const std::vector<double> g = greville_abscissae(p.knots[td[k]], p.degrees[td[k]]);
+    uvw[td[k]] = (1.0 - a) * g[n0[k]] + a * g[n1[k]];
   }
-  const Eigen::Matrix<double, 3, 2> J = evaluate_jacobian(s, uv);
-  Eigen::Vector3d n = J.col(0).cross(J.col(1));
-  const auto& c = cage.faces[f];
-  const Eigen::Vector3d d1 = (cage.points.row(c[2]) - cage.points.row(c[0])).transpose();
-  const Eigen::Vector3d d2 = (cage.points.row(c[3]) - cage.points.row(c[1])).transpose();
-  const Eigen::Vector3d face_n = d1.cross(d2);
-  if (n.dot(face_n) < 0) n = -n;
-  return {evaluate_point(s, uv), n};
+  const auto& U = p.knots[d];
+  uvw[d] = o.side.parameter() ? U[U.size() - p.degrees[d] - 1] : U[p.degrees[d]];
+  const Eigen::Matrix3d J = evaluate_jacobian(p, uvw);
+  Eigen::Vector3d n = J.col(td[0]).cross(J.col(td[1]));
+  const Eigen::Vector3d out = o.side.parameter() ? Eigen::Vector3d(J.col(d)) : Eigen::Vector3d(-J.col(d));
+  if (n.dot(out) < 0) n = -n;
+  return {evaluate_point(p, uvw), n};
 }
 
 std::vector<double> fractions(int samples) {

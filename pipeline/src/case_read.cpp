@@ -234,6 +234,18 @@ ReduceSettings read_reduce(const json& v, const std::string& file) {
   return s;
 }
 
+// Every key optional; the section's presence asks for the surfaces.
+TnurccSettings read_tnurcc(const json& v, const std::string& file) {
+  ObjectReader r(v, "tnurcc", file);
+  TnurccSettings s;
+  s.crease_angle = r.number_in("crease_angle", s.crease_angle, 0.0, 180.0);
+  s.fit_iterations = r.integer("fit_iterations", s.fit_iterations, 0, 100);
+  s.samples_per_face = r.integer("samples_per_face", s.samples_per_face, 1, 16);
+  s.vtu_per_face = r.integer("vtu_per_face", s.vtu_per_face, 1, 32);
+  r.refuse_unknown();
+  return s;
+}
+
 // Limits in percent in the file, fractions in CheckOptions.
 iga_check::CheckOptions read_check(const json& v, const std::string& file) {
   ObjectReader r(v, "check", file);
@@ -343,6 +355,7 @@ void read_sections(ObjectReader& r, const std::string& file, Case& c) {
   if (const json* k = r.find("check")) c.check = read_check(*k, file);
   if (const json* v = r.find("validation")) c.validation = read_validation(*v, file);
   if (const json* d = r.find("reduce")) c.reduce = read_reduce(*d, file);
+  if (const json* d = r.find("tnurcc")) c.tnurcc = read_tnurcc(*d, file);
   if (const json* l = r.find("load_case")) {
     c.load_case = read_load_case(*l, file);
     check_load_case_labels(c, r);

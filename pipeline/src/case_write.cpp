@@ -50,6 +50,11 @@ json reduce_json(const ReduceSettings& s) {
   return s.tolerance > 0.0 ? json{{"tolerance", s.tolerance}} : json{{"relative_tolerance", s.relative_tolerance}};
 }
 
+json tnurcc_json(const TnurccSettings& s) {
+  return {{"crease_angle", s.crease_angle}, {"fit_iterations", s.fit_iterations},
+          {"samples_per_face", s.samples_per_face}, {"vtu_per_face", s.vtu_per_face}};
+}
+
 bool check_is_default(const iga_check::CheckOptions& o) {
   const iga_check::CheckOptions d;
   return o.fidelity_limit == d.fidelity_limit && o.volume_limit == d.volume_limit;
@@ -136,6 +141,7 @@ void add_stage_options(const Case& c, json& root) {
   root["check"] = check_json(c.check);
   root["validation"] = validation_json(c.validation);
   if (c.reduce) root["reduce"] = reduce_json(*c.reduce);
+  if (c.tnurcc) root["tnurcc"] = tnurcc_json(*c.tnurcc);
   if (c.load_case) root["load_case"] = load_case_json(*c.load_case);
 }
 
@@ -165,6 +171,7 @@ std::string case_json(const Case& c, const std::string& relative_to, bool all_op
     if (!check_is_default(c.check)) root["check"] = check_json(c.check);
     if (!validation_is_default(c.validation)) root["validation"] = validation_json(c.validation);
     if (c.reduce) root["reduce"] = reduce_json(*c.reduce);
+    if (c.tnurcc) root["tnurcc"] = tnurcc_json(*c.tnurcc);
   }
   return root.dump(2) + "\n";
 }

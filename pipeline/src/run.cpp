@@ -250,6 +250,12 @@ void run_stages(const Case& c, Observer& outer, OutputFolder* folder, RunResult&
   if (folder)
     for (const auto& f : export_stage(r.model, c.export_formats, folder->staging(), r.report.certificates, observer).written)
       p.outputs.push_back(fs::path(f).filename().string());
+  if (c.tnurcc) {
+    r.tnurcc = tnurcc_surfaces(r.model, surfaces.inputs, *c.tnurcc, observer);
+    if (folder)
+      for (const auto& f : write_tnurcc(r.tnurcc, (fs::path(folder->staging()) / "tnurcc").string(), *c.tnurcc))
+        p.outputs.push_back((fs::path("tnurcc") / fs::path(f).filename()).string());
+  }
   if (c.validation.enabled) p.validation = validation_stage(r.model, r.report, c.validation, observer);
   if (c.load_case) run_load_case(c, observer, folder, r, stages);
   p.stages = stages;

@@ -3,7 +3,11 @@
 // ways, and is smooth where the C0 multipatch kinks.
 #include <gtest/gtest.h>
 
-#include "igaprep/mesh/read_surface.h"
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+
+#include "igaprep/export/tnurcc_files.h"
 #include "igaprep/pipeline/tnurcc.h"
 #include "pipeline/pipeline_runs.h"
 
@@ -11,20 +15,14 @@ namespace {
 
 using namespace igaprep;
 
-struct Built {
-  std::vector<pipeline::TnurccSurface> surfaces;
-};
-
-Built tnurcc_of(const std::string& model, const std::vector<std::string>& files) {
-  pipeline_test::Recorder rec;
+// A run with the case's "tnurcc" section.
+pipeline::RunResult run_with_tnurcc(const std::string& model, pipeline_test::Recorder& rec, bool write) {
   pipeline::RunOptions ro;
-  ro.write_outputs = false;
-  const pipeline::RunResult r =
-      pipeline::run(pipeline_test::model_case(model, R"({"validation": {"enabled": false}})", "tnurcc_" + model), rec, ro);
+  ro.write_outputs = write;
+  pipeline::RunResult r = pipeline::run(
+      pipeline_test::model_case(model, R"({"validation": {"enabled": false}, "tnurcc": {}})", "tnurcc_" + model), rec, ro);
   EXPECT_TRUE(r.report.passed) << r.report.verdict;
-  std::vector<mesh::TriMesh> meshes;
-  for (const auto& f : files) meshes.push_back(mesh::read_surface(pipeline_test::models_dir() + "/" + model + "/" + f));
-  return {pipeline::tnurcc_surfaces(r.model, meshes, {}, rec)};
+  return r;
 }
 
 void expect_follows_and_smooth(const pipeline::TnurccSurface& s) {
@@ -44,18 +42,33 @@ void expect_follows_and_smooth(const pipeline::TnurccSurface& s) {
   EXPECT_LT(s.model_jumps.max_gap, 1e-9 * s.diagonal);
 }
 
-TEST(TnurccModels, Ring2BothSurfacesFollowTheirInputs) {
-  const Built b = tnurcc_of("ring2", {"outer.off", "inner.off"});
-  ASSERT_EQ(b.surfaces.size(), 2u);
-  for (const auto& s : b.surfaces) expect_follows_and_smooth(s);
+TEST(TnurccModels, Ring2BothSurfacesFollowTheirInputsAndAreWritten) {
+  pipeline_test::Recorder rec;
+  const pipeline::RunResult r = run_with_tnurcc("ring2", rec, true);
+  ASSERT_EQ(r.tnurcc.size(), 2u);
+  for (const auto& s : r.tnurcc) expect_follows_and_smooth(s);
   // The limit surface follows the outer input closer than the C0 model does.
-  EXPECT_LT(b.surfaces[0].limit_fidelity->limit_to_mesh.max, b.surfaces[0].model_fidelity->spline_to_mesh.max);
+  EXPECT_LT(r.tnurcc[0].limit_fidelity->limit_to_mesh.max, r.tnurcc[0].model_fidelity->spline_to_mesh.max);
+  const std::vector<std::string> stages = rec.stage_names();
+  EXPECT_EQ(std::count(stages.begin(), stages.end(), "tnurcc"), 2);
+  // The files: the cage reads back as it was fitted; the VTU loads in VTK with its arrays.
+  const std::string dir = r.output_dir + "/tnurcc/";
+  std::ifstream obj(dir + "outer_cage.obj");
+  const spline::Cage back = exporter::read_cage_obj(obj);
+  EXPECT_EQ((back.points - r.tnurcc[0].cage.points).cwiseAbs().maxCoeff(), 0.0);
+  const std::string vtk = std::string(IGAPREP_PYTHON) +
+                          " -c \"import vtk, sys; r = vtk.vtkXMLUnstructuredGridReader(); r.SetFileName(sys.argv[1]); "
+                          "r.Update(); g = r.GetOutput(); pd = g.GetPointData(); "
+                          "sys.exit(0 if g.GetNumberOfCells() == 3072 * 36 and pd.GetArray('Normals') and "
+                          "pd.GetArray('MeanCurvature') else 1)\" " + dir + "inner_limit.vtu";
+  EXPECT_EQ(std::system(vtk.c_str()), 0) << vtk;
 }
 
 TEST(TnurccModels, Torus3FollowsItsInput) {
-  const Built b = tnurcc_of("torus3", {"outer.off"});
-  ASSERT_EQ(b.surfaces.size(), 1u);
-  expect_follows_and_smooth(b.surfaces[0]);
+  pipeline_test::Recorder rec;
+  const pipeline::RunResult r = run_with_tnurcc("torus3", rec, false);
+  ASSERT_EQ(r.tnurcc.size(), 1u);
+  expect_follows_and_smooth(r.tnurcc[0]);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "igaprep/param/midsurface_pipeline.h"
 #include "igaprep/param/volume_param.h"
 #include "igaprep/pipeline/reduce.h"
+#include "igaprep/pipeline/tnurcc.h"
 #include "igaprep/spline/block_fit.h"
 #include "igaprep/spline/optimize_jacobian.h"
 
@@ -111,6 +112,7 @@ struct Case {
   iga_check::CheckOptions check;            // section "check": fidelity_limit, volume_limit (percent in the file)
   CaseValidation validation;                // section "validation"
   std::optional<ReduceSettings> reduce;     // section "reduce": data reduction after the fit
+  std::optional<TnurccSettings> tnurcc;     // section "tnurcc": T-NURCC surfaces of the model (folder tnurcc/)
   std::optional<CaseLoadCase> load_case;    // section "load_case"
 };
 

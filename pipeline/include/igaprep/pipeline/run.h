@@ -10,6 +10,7 @@
 #include "igaprep/iga_check/report.h"
 #include "igaprep/pipeline/case.h"
 #include "igaprep/pipeline/observer.h"
+#include "igaprep/pipeline/tnurcc.h"
 #include "igaprep/spline/multipatch.h"
 
 namespace igaprep::pipeline {
@@ -28,6 +29,7 @@ struct RunResult {
   spline::MultiPatch model;                   // with its provenance filled
   iga_check::CheckReport report;              // with the "pipeline" section (stages, figures, verdict)
   std::optional<LoadCaseFigures> load_case;   // when the case has one
+  std::vector<TnurccSurface> tnurcc;          // when the case asks for them (section "tnurcc")
   int rectangles = 0, boundary_segments = 0;  // of M's layout
   bool passed = false;                        // the check passed and the validation met its rate (or was off)
   std::string output_dir;                     // where the outputs went (when written)

@@ -12,6 +12,7 @@ namespace {
 struct Matches {
   std::vector<spline::FitPair> to_mesh, to_limit;  // limit -> mesh, mesh -> limit
   std::vector<double> to_mesh_distance, to_limit_distance;
+  std::vector<Eigen::Vector3d> limit_points;  // of the limit -> mesh pairs
 };
 
 void limit_to_mesh(const spline::Cage& cage, const mesh::TriMesh& mesh, const LimitFidelityOptions& o, Matches& m) {
@@ -25,6 +26,7 @@ void limit_to_mesh(const spline::Cage& cage, const mesh::TriMesh& mesh, const Li
     const Eigen::Vector3d q = detail::vec(tree.closest_point(detail::pt(x)));
     m.to_mesh.push_back({at[i], q});
     m.to_mesh_distance.push_back((q - x).norm());
+    m.limit_points.push_back(x);
   }
 }
 
@@ -99,20 +101,6 @@ Matches match(const spline::Cage& cage, const mesh::TriMesh& mesh, const LimitFi
   return m;
 }
 
-std::vector<Eigen::Vector3d> points_of(const std::vector<spline::FitPair>& pairs, bool targets,
-                                       const spline::Cage& cage, const LimitFidelityOptions& o) {
-  std::vector<Eigen::Vector3d> out;
-  if (targets) {
-    for (const auto& p : pairs) out.push_back(p.target);
-    return out;
-  }
-  std::vector<spline::LimitLocation> at;
-  for (const auto& p : pairs) at.push_back(p.at);
-  const Eigen::MatrixXd X = spline::limit_stencils(cage, at, o.limit).value * cage.points;
-  for (int i = 0; i < X.rows(); ++i) out.push_back(X.row(i).transpose());
-  return out;
-}
-
 }  // namespace
 
 LimitFidelity limit_fidelity(const spline::Cage& cage, const mesh::TriMesh& mesh, double diagonal,
@@ -120,8 +108,10 @@ LimitFidelity limit_fidelity(const spline::Cage& cage, const mesh::TriMesh& mesh
   if (!(diagonal > 0.0)) diagonal = mesh_diagonal(mesh);
   const Matches m = match(cage, mesh, options);
   LimitFidelity f;
-  f.limit_to_mesh = detail::summarize(m.to_mesh_distance, points_of(m.to_mesh, false, cage, options), diagonal);
-  f.mesh_to_limit = detail::summarize(m.to_limit_distance, points_of(m.to_limit, true, cage, options), diagonal);
+  std::vector<Eigen::Vector3d> vertices;
+  for (const auto& p : m.to_limit) vertices.push_back(p.target);
+  f.limit_to_mesh = detail::summarize(m.to_mesh_distance, m.limit_points, diagonal);
+  f.mesh_to_limit = detail::summarize(m.to_limit_distance, vertices, diagonal);
   return f;
 }
 

@@ -9,8 +9,11 @@ case's export "vtu" (model.vtu). Writes PREFIX_sides.png (T1 coloured by
 cut region, with the cut loops), PREFIX_midsurface.png (M0trim coloured by
 u), PREFIX_patches.png (the model coloured by patch, T1 translucent),
 PREFIX_quality.png (its surface coloured by each element's smallest sampled
-scaled Jacobian, with a colour bar) and, for a model of more than one
-material, PREFIX_materials.png, each from
+scaled Jacobian, with a colour bar), for a model of more than one
+material PREFIX_materials.png, and for each T-NURCC surface in
+OUTPUT_DIR/tnurcc (`igaprep tnurcc ... -o OUTPUT_DIR/tnurcc`, or a case's
+"tnurcc" section) PREFIX_tnurcc_NAME.png (the limit surface coloured by
+mean curvature, its cage as a wireframe), each from
 above and from an oblique view, or from the directions VIEWS gives
 ("x,y,z;x,y,z;...", the camera's direction from the model's centre).
 """
@@ -55,6 +58,31 @@ def actor(data, array=None, colour=(0.75, 0.75, 0.75), opacity=1.0, line_width=1
 
 # From above and from an oblique view, when no VIEWS are given.
 DEFAULT_VIEWS = ((0, 0, 1), (1, -1, 0.6))
+
+
+def cage_actor(path):
+    reader = vtk.vtkOBJReader()
+    reader.SetFileName(path)
+    edges = vtk.vtkExtractEdges()
+    edges.SetInputConnection(reader.GetOutputPort())
+    mapper = vtk.vtkPolyDataMapper()
+    mapper.SetInputConnection(edges.GetOutputPort())
+    mapper.ScalarVisibilityOff()
+    a = vtk.vtkActor()
+    a.SetMapper(mapper)
+    a.GetProperty().SetColor(0.1, 0.1, 0.1)
+    a.GetProperty().SetOpacity(0.35)
+    return a
+
+
+def render_tnurcc(folder, prefix, views):
+    tnurcc = os.path.join(folder, "tnurcc")
+    if not os.path.isdir(tnurcc):
+        return
+    for name in sorted(f[: -len("_limit.vtu")] for f in os.listdir(tnurcc) if f.endswith("_limit.vtu")):
+        limit = actor(read(os.path.join(tnurcc, name + "_limit.vtu")), "MeanCurvature")
+        cage = cage_actor(os.path.join(tnurcc, name + "_cage.obj"))
+        render([limit, cage], prefix + "_tnurcc_" + name + ".png", views, [colour_bar(limit, "mean curvature")])
 
 
 def colour_bar(a, title):
@@ -130,6 +158,7 @@ def main():
         materials = data.GetCellData().GetArray("material")
         if materials is not None and materials.GetRange()[1] > materials.GetRange()[0]:
             render([actor(data, "material")], prefix + "_materials.png", views)
+    render_tnurcc(folder, prefix, views)
 
 
 if __name__ == "__main__":

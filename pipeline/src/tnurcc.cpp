@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 
 #include "igaprep/core/atomic_file.h"
@@ -65,6 +66,7 @@ void fit_to_mesh(TnurccSurface& s, const spline::MultiPatch& mp, const mesh::Tri
   if (settings.fit_iterations > 0) {
     spline::CageFitOptions options;
     options.iterations = settings.fit_iterations;
+    options.smoothing = settings.smoothing;
     const spline::CageFitResult r = spline::fit_cage(
         s.cage, [&](const spline::Cage& c) { return iga_check::limit_mesh_pairs(c, mesh, fo); }, options);
     s.cage = r.cage;
@@ -78,6 +80,23 @@ void fit_to_mesh(TnurccSurface& s, const spline::MultiPatch& mp, const mesh::Tri
   alone.only_surface = s.label;
   for (auto& f : iga_check::fidelity(mp, only, s.diagonal, alone))
     if (f.surface == s.label) s.model_fidelity = std::move(f);
+}
+
+// Percentiles 1, 50 and 99 of the mean curvature over samples_per_face^2
+// points per face (points where it is not defined, such as some
+// extraordinary points, left out).
+std::array<double, 3> curvature_percentiles(const spline::Cage& cage, int samples_per_face) {
+  spline::LimitOptions o;
+  o.second_derivatives = true;
+  const auto at = spline::face_grid(cage, samples_per_face, false);
+  const Eigen::VectorXd H = spline::limit_values(spline::limit_stencils(cage, at, o), cage.points).mean_curvature;
+  std::vector<double> h;
+  for (double x : H)
+    if (std::isfinite(x)) h.push_back(x);
+  if (h.empty()) return {{0.0, 0.0, 0.0}};
+  std::sort(h.begin(), h.end());
+  auto at_fraction = [&](double q) { return h[static_cast<size_t>(q * double(h.size() - 1))]; };
+  return {{at_fraction(0.01), at_fraction(0.5), at_fraction(0.99)}};
 }
 
 StageSummary summary(const TnurccSurface& s, double seconds) {
@@ -97,6 +116,8 @@ StageSummary summary(const TnurccSurface& s, double seconds) {
                                100 * s.limit_fidelity->mesh_to_limit.max_relative,
                                100 * s.model_fidelity->spline_to_mesh.max_relative,
                                100 * s.model_fidelity->mesh_to_spline.max_relative));
+  out.details.push_back(text("mean curvature of the limit surface (1st / 50th / 99th percentile): %.3g / %.3g / %.3g",
+                             s.mean_curvature[0], s.mean_curvature[1], s.mean_curvature[2]));
   out.details.push_back(text("normal jump across patch edges (max, degrees): C0 model %.3g, limit surface %.3g "
                              "(%.3g over every cage edge)",
                              s.model_jumps.max, s.limit_jumps_patch_edges.max, s.limit_jumps.max));
@@ -123,6 +144,7 @@ std::vector<TnurccSurface> tnurcc_surfaces(const spline::MultiPatch& mp, const s
     for (const auto& e : s.cage.edges) s.crease_edges += e.sharpness > 0.0;
     s.limit_jumps_patch_edges = spline::limit_normal_jumps(s.cage, spline::JumpEdges::smooth_patch_edges);
     s.limit_jumps = spline::limit_normal_jumps(s.cage, spline::JumpEdges::smooth);
+    s.mean_curvature = curvature_percentiles(s.cage, settings.samples_per_face);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     observer.stage_finished(summary(s, seconds));
     out.push_back(std::move(s));

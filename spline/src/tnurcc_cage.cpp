@@ -25,8 +25,13 @@ std::vector<SideRef> sides_of_label(const MultiPatch& mp, int label) {
   std::vector<SideRef> out;
   for (const auto& b : mp.boundaries)
     if (b.label == label) out.push_back({b.patch, b.side});
+  // An interface's side from the inner material (the higher index: material
+  // i lies inside surface i), so that "out of the patch" is out of the surface.
   for (const auto& itf : mp.interfaces)
-    if (itf.surface == label) out.push_back({itf.patch_a, itf.side_a});
+    if (itf.surface == label) {
+      const bool a_inside = mp.patches[itf.patch_a].material >= mp.patches[itf.patch_b].material;
+      out.push_back(a_inside ? SideRef{itf.patch_a, itf.side_a} : SideRef{itf.patch_b, itf.side_b});
+    }
   return out;
 }
 

@@ -8,7 +8,8 @@
 namespace igaprep::spline {
 namespace {
 
-// Row i: point i minus the mean of its edge neighbours.
+// Row i: point i minus the mean of its edge neighbours: the fairing term
+// pulls each point towards its neighbours' mean.
 StencilMatrix umbrella_laplacian(const Cage& cage) {
   const std::vector<int> valence = vertex_valences(cage);
   std::vector<Eigen::Triplet<double>> t;
@@ -62,14 +63,15 @@ CageFitResult fit_cage(const Cage& start, const FitPairsFn& pairs, const CageFit
     const Eigen::SparseMatrix<double> N = At * s.A + lambda * LtL;
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(N);
     if (solver.info() != Eigen::Success) throw internal_error("T-NURCC fit: the normal equations did not factorize");
-    const Eigen::MatrixXd step = solver.solve(Eigen::MatrixXd(At * residual));
+    const Eigen::MatrixXd rhs = At * residual - lambda * (LtL * r.cage.points);
+    const Eigen::MatrixXd step = solver.solve(rhs);
     r.cage.points += step;
     ++r.iterations;
     s = pair_system(r.cage, pairs, options.limit);
     residual = s.targets - s.A * r.cage.points;
     const double now = rms(residual), before = r.rms.back();
     r.rms.push_back(now);
-    if (before - now < options.stop_improvement * before) break;
+    if (std::abs(before - now) < options.stop_improvement * before) break;
   }
   return r;
 }

@@ -5,6 +5,7 @@
 // surface, closest points both ways), with the figures that compare it to
 // the C0 multipatch: fidelity both ways and the normal jumps across patch
 // edges.
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,6 +23,7 @@ struct TnurccSettings {
   std::vector<int> labels;     // the surfaces to build; empty: every label a patch side stands for
   double crease_angle = 60.0;  // degrees: the model's nets and the input mesh turn more at a crease
   int fit_iterations = 8;      // 0: the cage as the model gives it, not fitted
+  double smoothing = 0.1;      // the fit's fairing weight (spline::CageFitOptions)
   int samples_per_face = 4;    // fit and fidelity (iga_check::LimitFidelityOptions)
   int vtu_per_face = 6;        // quads per cage face and direction in limit.vtu
 };
@@ -37,6 +39,9 @@ struct TnurccSurface {
   std::optional<iga_check::SurfaceFidelity> model_fidelity;
   double diagonal = 0.0;  // the mesh's bounding-box diagonal (the relative figures' length)
   spline::NormalJumps model_jumps, limit_jumps_patch_edges, limit_jumps;
+  // Fairness: the limit surface's mean curvature at its samples (the
+  // fidelity's grid), 1st, 50th and 99th percentile, model units^-1.
+  std::array<double, 3> mean_curvature{{0.0, 0.0, 0.0}};
 };
 
 // Inputs: a conforming model, meshes indexed by label (an empty mesh: not

@@ -52,7 +52,8 @@ struct CageOptions {
 };
 
 // Inputs: a conforming model and a label (index into mp.labels). Output: the
-// cage, its faces oriented outward (away from the patches). Knot intervals:
+// cage, its faces oriented outward (out of the patches on a boundary, out
+// of the inner material on an interface). Knot intervals:
 // each side's knot vectors scaled to [0, 1], edge (P_i, P_{i+1}) of an odd
 // degree p net taking U[i + (p+1)/2 + 1] - U[i + (p+1)/2]; the zero
 // intervals of the clamped ends become the nearest interior interval, so

@@ -2,9 +2,10 @@
 // Fitting a cage so that its limit surface follows a target surface: point
 // pairs (a limit location and the target point it should reach) are asked
 // of the caller for the current cage, then the cage points solve the linear
-// least-squares problem on OpenSubdiv's limit stencils, with a small
-// umbrella-Laplacian term on the update so that points no pair pulls stay
-// in place and the cage stays fair. Repeated: the pairs follow the surface.
+// least-squares problem on OpenSubdiv's limit stencils plus a fairing term
+// (the umbrella Laplacian of the cage points, weighted): it holds points no
+// pair pulls and keeps the surface from following a faceted mesh's kinks.
+// Repeated: the pairs follow the surface.
 #include <Eigen/Core>
 #include <functional>
 #include <vector>
@@ -25,8 +26,8 @@ using FitPairsFn = std::function<std::vector<FitPair>(const Cage& current)>;
 
 struct CageFitOptions {
   int iterations = 8;
-  double smoothing = 1e-3;           // weight of the update's Laplacian, per pair and cage point
-  double stop_improvement = 1e-3;    // stop when the rms distance improves by less (relative)
+  double smoothing = 0.1;            // weight of the fairing term, per pair and cage point
+  double stop_improvement = 1e-3;    // stop when the rms distance changes by less (relative)
   LimitOptions limit;
 };
 

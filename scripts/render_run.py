@@ -17,6 +17,7 @@ mean curvature, its cage as a wireframe), each from
 above and from an oblique view, or from the directions VIEWS gives
 ("x,y,z;x,y,z;...", the camera's direction from the model's centre).
 """
+import math
 import os
 import sys
 
@@ -75,12 +76,21 @@ def cage_actor(path):
     return a
 
 
+def percentile_range(values, low=0.01, high=0.99):
+    """The 1st and 99th percentile of an array's finite values: the colours
+    are not spent on a few points (the curvature at extraordinary points)."""
+    finite = sorted(v for v in (values.GetValue(i) for i in range(values.GetNumberOfTuples())) if math.isfinite(v))
+    return finite[int(low * (len(finite) - 1))], finite[int(high * (len(finite) - 1))]
+
+
 def render_tnurcc(folder, prefix, views):
     tnurcc = os.path.join(folder, "tnurcc")
     if not os.path.isdir(tnurcc):
         return
     for name in sorted(f[: -len("_limit.vtu")] for f in os.listdir(tnurcc) if f.endswith("_limit.vtu")):
-        limit = actor(read(os.path.join(tnurcc, name + "_limit.vtu")), "MeanCurvature")
+        data = read(os.path.join(tnurcc, name + "_limit.vtu"))
+        limit = actor(data, "MeanCurvature")
+        limit.GetMapper().SetScalarRange(*percentile_range(data.GetPointData().GetArray("MeanCurvature")))
         cage = cage_actor(os.path.join(tnurcc, name + "_cage.obj"))
         render([limit, cage], prefix + "_tnurcc_" + name + ".png", views, [colour_bar(limit, "mean curvature")])
 

@@ -22,17 +22,28 @@ std::vector<VertexStar> stars(const Cage& cage) {
 
 int other_end(const CageEdge& e, int v) { return e.vertices[0] == v ? e.vertices[1] : e.vertices[0]; }
 
-Eigen::RowVector3d vertex_point(const Cage& cage, const VertexStar& star, int v, const Eigen::MatrixXd& face_points) {
-  const Eigen::RowVector3d p = cage.points.row(v);
-  std::vector<int> creases;
+// The vertices of v's creases (crease and border edges), and whether v is a corner.
+struct CreaseStar {
+  std::vector<int> ends;
+  bool corner = false;
+};
+CreaseStar crease_star(const Cage& cage, const VertexStar& star, int v) {
+  CreaseStar c;
   bool border = false;
   for (int e : star.edges) {
-    if (sharp(cage.edges[e])) creases.push_back(other_end(cage.edges[e], v));
+    if (sharp(cage.edges[e])) c.ends.push_back(other_end(cage.edges[e], v));
     border = border || cage.edges[e].faces[1] < 0;
   }
+  c.corner = c.ends.size() >= 3 || (border && star.edges.size() == 2);
+  return c;
+}
+
+Eigen::RowVector3d vertex_point(const Cage& cage, const VertexStar& star, int v, const Eigen::MatrixXd& face_points) {
+  const Eigen::RowVector3d p = cage.points.row(v);
+  const CreaseStar c = crease_star(cage, star, v);
   const int n = static_cast<int>(star.edges.size());
-  if (creases.size() >= 3 || (border && n == 2)) return p;  // a corner
-  if (creases.size() == 2) return (cage.points.row(creases[0]) + 6.0 * p + cage.points.row(creases[1])) / 8.0;
+  if (c.corner) return p;
+  if (c.ends.size() == 2) return (cage.points.row(c.ends[0]) + 6.0 * p + cage.points.row(c.ends[1])) / 8.0;
   Eigen::RowVector3d q = Eigen::RowVector3d::Zero(), r = Eigen::RowVector3d::Zero();
   for (int f : star.faces) q += face_points.row(f);
   for (int e : star.edges) r += 0.5 * (p + cage.points.row(other_end(cage.edges[e], v)));
@@ -41,15 +52,44 @@ Eigen::RowVector3d vertex_point(const Cage& cage, const VertexStar& star, int v,
   return (q + 2.0 * r + (n - 3.0) * p) / double(n);
 }
 
-}  // namespace
-
-Cage refine_cage(const Cage& cage) {
+// Equal intervals, every edge smooth or infinitely sharp: what the rules here cover.
+void require_uniform_rules(const Cage& cage) {
   if (!uniform_intervals(cage, 1e-12))
     throw bad_input("T-NURCC refinement: the cage's knot intervals differ; the non-uniform rules are not written yet");
   for (const auto& e : cage.edges)
     if (e.sharpness > 0.0 && e.sharpness < kInfiniteSharpness)
       throw bad_input("T-NURCC refinement: edge (" + std::to_string(e.vertices[0]) + ", " +
                       std::to_string(e.vertices[1]) + ") is semi-sharp; only smooth and infinitely sharp edges are");
+}
+
+}  // namespace
+
+Eigen::MatrixXd limit_positions(const Cage& cage) {
+  require_uniform_rules(cage);
+  const std::vector<VertexStar> star = stars(cage);
+  Eigen::MatrixXd out(cage.points.rows(), 3);
+  for (int v = 0; v < cage.points.rows(); ++v) {
+    const Eigen::RowVector3d p = cage.points.row(v);
+    const CreaseStar c = crease_star(cage, star[v], v);
+    if (c.corner) {
+      out.row(v) = p;
+    } else if (c.ends.size() == 2) {
+      out.row(v) = (cage.points.row(c.ends[0]) + 4.0 * p + cage.points.row(c.ends[1])) / 6.0;
+    } else {
+      const double n = double(star[v].edges.size());
+      Eigen::RowVector3d sum = n * n * p;
+      for (int e : star[v].edges) sum += 4.0 * cage.points.row(other_end(cage.edges[e], v));
+      for (int f : star[v].faces)
+        for (int k = 0; k < 4; ++k)
+          if (cage.faces[f][k] == v) sum += cage.points.row(cage.faces[f][(k + 2) % 4]);
+      out.row(v) = sum / (n * (n + 5.0));
+    }
+  }
+  return out;
+}
+
+Cage refine_cage(const Cage& cage) {
+  require_uniform_rules(cage);
   const int nf = static_cast<int>(cage.faces.size()), ne = static_cast<int>(cage.edges.size());
   const int nv = static_cast<int>(cage.points.rows());
   Cage child;

@@ -130,3 +130,25 @@ TEST(TnurccRefine, RefusesWhatItCannotRefine) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(TnurccRefine, LimitPositionMasksAreOpenSubdivsLimitPoints) {
+  for (const Cage& c : cages()) {
+    const Eigen::MatrixXd masks = limit_positions(c);
+    // Each vertex at a corner of one of its faces.
+    std::vector<LimitLocation> at(c.points.rows());
+    std::vector<bool> seen(c.points.rows(), false);
+    const double s[4] = {0, 1, 1, 0}, t[4] = {0, 0, 1, 1};
+    for (int f = 0; f < int(c.faces.size()); ++f)
+      for (int k = 0; k < 4; ++k)
+        if (!seen[c.faces[f][k]]) {
+          seen[c.faces[f][k]] = true;
+          at[c.faces[f][k]] = {f, s[k], t[k]};
+        }
+    const Eigen::MatrixXd X = limit_stencils(c, at).value * c.points;
+    EXPECT_LT((X - masks).cwiseAbs().maxCoeff(), 1e-12);
+  }
+}
+
+}  // namespace

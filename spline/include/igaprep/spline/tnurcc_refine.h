@@ -5,6 +5,8 @@
 // border as creases (a border vertex with one face a corner), the knot
 // intervals halved so that opposite edges stay equal. The refined cage has
 // the same limit surface.
+#include <Eigen/Core>
+
 #include "igaprep/spline/tnurcc_cage.h"
 
 namespace igaprep::spline {
@@ -15,5 +17,11 @@ namespace igaprep::spline {
 // edges k and k - 1. Throws bad_input for unequal knot intervals (the
 // non-uniform rules of NURSS are not written yet) or a semi-sharp edge.
 Cage refine_cage(const Cage& cage);
+
+// The limit position of every cage vertex by Catmull-Clark's masks: a
+// smooth vertex of valence n (n^2 v + 4 sum of its edge neighbours + sum of
+// its faces' opposite corners) / (n (n + 5)), a crease vertex (a + 4 v + b)
+// / 6, a corner v. Same refusals as refine_cage.
+Eigen::MatrixXd limit_positions(const Cage& cage);
 
 }  // namespace igaprep::spline

@@ -138,9 +138,9 @@ std::vector<TnurccSurface> tnurcc_surfaces(const spline::MultiPatch& mp, const s
     s.cage = spline::surface_cage(mp, label, cage_options);
     s.name = mp.labels[label];
     for (int v : spline::vertex_valences(s.cage)) s.extraordinary_vertices += v != 4;
-    s.model_jumps = spline::model_normal_jumps(mp, s.cage);  // on the model's own cage: it orients the sides
     if (label < static_cast<int>(meshes.size()) && meshes[label].F.rows() > 0)
       fit_to_mesh(s, mp, meshes[label], settings);
+    s.model_jumps = spline::model_normal_jumps(mp, s.cage);  // the model's sides; the cage gives edges and creases
     for (const auto& e : s.cage.edges) s.crease_edges += e.sharpness > 0.0;
     s.limit_jumps_patch_edges = spline::limit_normal_jumps(s.cage, spline::JumpEdges::smooth_patch_edges);
     s.limit_jumps = spline::limit_normal_jumps(s.cage, spline::JumpEdges::smooth);

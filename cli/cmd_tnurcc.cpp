@@ -74,6 +74,8 @@ void add_tnurcc_command(CLI::App& app) {
   sub->add_option("--iterations", args->settings.fit_iterations, "Fit iterations (closest points, then least squares)")
       ->capture_default_str()
       ->check(CLI::Range(0, 100));
+  sub->add_flag("--equal-intervals", args->settings.equal_intervals,
+               "Every knot interval 1: the cage as a Catmull-Clark cage (for models with non-uniform knots)");
   sub->add_option("--smoothing", args->settings.smoothing, "The fit's fairing weight, per point pair and cage point")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1e6));

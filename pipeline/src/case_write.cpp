@@ -52,7 +52,8 @@ json reduce_json(const ReduceSettings& s) {
 
 json tnurcc_json(const TnurccSettings& s) {
   return {{"crease_angle", s.crease_angle}, {"fit_iterations", s.fit_iterations},
-          {"samples_per_face", s.samples_per_face}, {"vtu_per_face", s.vtu_per_face}};
+          {"samples_per_face", s.samples_per_face}, {"vtu_per_face", s.vtu_per_face},
+          {"equal_intervals", s.equal_intervals}, {"smoothing", s.smoothing}};
 }
 
 bool check_is_default(const iga_check::CheckOptions& o) {

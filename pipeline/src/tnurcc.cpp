@@ -130,6 +130,7 @@ std::vector<TnurccSurface> tnurcc_surfaces(const spline::MultiPatch& mp, const s
                                            const TnurccSettings& settings, Observer& observer) {
   spline::CageOptions cage_options;
   cage_options.crease_angle = settings.crease_angle;
+  cage_options.equal_intervals = settings.equal_intervals;
   std::vector<TnurccSurface> out;
   for (int label : labels_to_build(mp, settings)) {
     const auto start = std::chrono::steady_clock::now();
@@ -137,6 +138,10 @@ std::vector<TnurccSurface> tnurcc_surfaces(const spline::MultiPatch& mp, const s
     s.label = label;
     s.cage = spline::surface_cage(mp, label, cage_options);
     s.name = mp.labels[label];
+    if (!spline::uniform_intervals(s.cage))
+      throw bad_input("T-NURCC '" + s.name + "': the model's knot vectors are not uniform (a reduced model, for one), "
+                      "and the non-uniform T-NURCC rules are not written yet; with equal_intervals its cage is taken "
+                      "as a Catmull-Clark cage (docs/tnurcc.md)");
     for (int v : spline::vertex_valences(s.cage)) s.extraordinary_vertices += v != 4;
     if (label < static_cast<int>(meshes.size()) && meshes[label].F.rows() > 0)
       fit_to_mesh(s, mp, meshes[label], settings);

@@ -231,7 +231,7 @@ Cage surface_cage(const MultiPatch& mp, int label, const CageOptions& options) {
       const int e = cage.face_edges[f][k];
       if (assigned[e]) continue;
       const bool along_i = cage.origin[f].net[k][1] == cage.origin[f].net[(k + 1) % 4][1];
-      cage.edges[e].interval = cell_intervals[f][along_i ? 0 : 1];
+      cage.edges[e].interval = options.equal_intervals ? 1.0 : cell_intervals[f][along_i ? 0 : 1];
       assigned[e] = true;
     }
   mark_creases(cage, options.crease_angle);

@@ -184,6 +184,23 @@ TEST(RunCli, Sphere2EndToEnd) {
   std::smatch m;
   ASSERT_TRUE(std::regex_search(r.out, m, std::regex(R"(volume ([0-9.]+) \(radius-edge)"))) << r.out;
   expect_blocks_mesh_fills_the_volume(out, std::stod(m[1]));
+  // The T-NURCC surfaces of the model just written: one line per surface, three files each.
+  // The model was reduced: its knots are not uniform, which the rules here do not cover.
+  const auto nonuniform = run_cli("tnurcc " + out + "/model.h5 -o " + dir + "/tnurcc");
+  EXPECT_EQ(nonuniform.exit_code, 1) << nonuniform.out;
+  EXPECT_NE(nonuniform.out.find("not uniform"), std::string::npos) << nonuniform.out;
+  const auto tn = run_cli("tnurcc " + out + "/model.h5 --equal-intervals --iterations 0 -o " + dir + "/tnurcc");
+  EXPECT_EQ(tn.exit_code, 0) << tn.out;
+  for (const char* label : {"outer", "inner"}) {
+    EXPECT_NE(tn.out.find(std::string("tnurcc") + " "), std::string::npos) << tn.out;
+    EXPECT_NE(tn.out.find(std::string("'") + label + "': cage of "), std::string::npos) << tn.out;
+    for (const char* f : {"_cage.obj", "_intervals.json", "_limit.vtu"})
+      EXPECT_TRUE(fs::exists(dir + "/tnurcc/" + label + f)) << label << f << "\n" << tn.out;
+  }
+  const auto bad = run_cli("tnurcc " + out + "/model.h5 --surface nowhere -o " + dir + "/tnurcc_bad");
+  EXPECT_EQ(bad.exit_code, 1) << bad.out;
+  EXPECT_NE(bad.out.find("no such label"), std::string::npos) << bad.out;
+  EXPECT_FALSE(fs::exists(dir + "/tnurcc_bad"));
 }
 
 TEST(RunCli, BadCaseIsRefusedWithExitOneBeforeAnyWork) {

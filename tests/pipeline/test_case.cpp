@@ -95,6 +95,9 @@ TEST(Case, BadKeysAreRefusedByName) {
       {R"(, "fit": {"jacobian_sweeps": 2.5})", "fit.jacobian_sweeps"},
       {R"(, "fit": {"jacobian_iterations": -1})", "fit.jacobian_iterations"},
       {R"(, "fit": {"jacobian_points": 1})", "fit.jacobian_points"},
+      {R"(, "tnurcc": {"crease_angle": 200})", "'tnurcc.crease_angle' must be a number in"},
+      {R"(, "tnurcc": {"fit": true})", "unknown key 'tnurcc.fit'"},
+      {R"(, "reduce": {"tolerance": 0.01}, "tnurcc": {})", "'tnurcc' after 'reduce' needs \"equal_intervals\": true"},
       {R"(, "colour": 1)", "unknown key 'colour'"},
   };
   for (const auto& c : cases) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "igaprep/spline/tnurcc_cage.h"
+#include "igaprep/spline/tnurcc_limit.h"
 #include "tnurcc/tnurcc_models.h"
 
 namespace {
@@ -85,6 +86,38 @@ TEST(TnurccCage, OppositeEdgeRuleNamesTheFace) {
   const auto v = opposite_edge_violations(c);
   ASSERT_EQ(v.size(), 1u);
   EXPECT_NE(v[0].find("face 0"), std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+using namespace igaprep::spline;
+
+TEST(TnurccCage, NonUniformKnotsGiveTheirIntervalsOrEqualOnesWhenAsked) {
+  MultiPatch mp = tnurcc_test::boxes(1, 3);
+  mp.patches[0].knots[0] = {0, 0, 0, 0, 0.2, 0.7, 1, 1, 1, 1};  // intervals 0.2, 0.5, 0.3 along u
+  const Cage c = surface_cage(mp, 0);
+  EXPECT_FALSE(uniform_intervals(c));
+  EXPECT_TRUE(opposite_edge_violations(c).empty());  // still a valid T-NURCC cage
+  std::vector<double> seen;
+  for (const auto& e : c.edges) seen.push_back(e.interval);
+  std::sort(seen.begin(), seen.end());
+  seen.erase(std::unique(seen.begin(), seen.end(), [](double a, double b) { return std::abs(a - b) < 1e-12; }),
+             seen.end());
+  // u: 0.2 (the clamped end's zero taking the nearest), 0.5, 0.3; v and w: 1/3.
+  ASSERT_EQ(seen.size(), 4u);
+  EXPECT_NEAR(seen[0], 0.2, 1e-12);
+  EXPECT_NEAR(seen[1], 0.3, 1e-12);
+  EXPECT_NEAR(seen[2], 1.0 / 3.0, 1e-12);
+  EXPECT_NEAR(seen[3], 0.5, 1e-12);
+  EXPECT_THROW(limit_stencils(c, {{0, 0.5, 0.5}}), igaprep::Error);
+  CageOptions equal;
+  equal.equal_intervals = true;
+  const Cage e = surface_cage(mp, 0, equal);
+  EXPECT_TRUE(uniform_intervals(e));
+  EXPECT_EQ(e.edges[0].interval, 1.0);
+  EXPECT_NO_THROW(limit_stencils(e, {{0, 0.5, 0.5}}));
 }
 
 }  // namespace

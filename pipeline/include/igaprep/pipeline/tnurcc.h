@@ -22,6 +22,7 @@ namespace igaprep::pipeline {
 struct TnurccSettings {
   std::vector<int> labels;     // the surfaces to build; empty: every label a patch side stands for
   double crease_angle = 60.0;  // degrees: the model's nets and the input mesh turn more at a crease
+  bool equal_intervals = false;  // spline::CageOptions; needed for models with non-uniform knots
   int fit_iterations = 8;      // 0: the cage as the model gives it, not fitted
   double smoothing = 0.1;      // the fit's fairing weight (spline::CageFitOptions)
   int samples_per_face = 4;    // fit and fidelity (iga_check::LimitFidelityOptions)
@@ -46,8 +47,9 @@ struct TnurccSurface {
 
 // Inputs: a conforming model, meshes indexed by label (an empty mesh: not
 // fitted), the settings. Each surface's summary goes to the observer as a
-// stage "tnurcc". Throws bad_input for an unknown label or a cage it
-// cannot build (spline::surface_cage).
+// stage "tnurcc". Throws bad_input for an unknown label, a cage it cannot
+// build (spline::surface_cage), or unequal knot intervals (a model with
+// non-uniform knots, unless equal_intervals).
 std::vector<TnurccSurface> tnurcc_surfaces(const spline::MultiPatch& mp, const std::vector<mesh::TriMesh>& meshes,
                                            const TnurccSettings& settings, Observer& observer);
 

@@ -49,6 +49,10 @@ struct CageOptions {
   // 60: the coarse built-in meshes turn by up to 37 degrees between
   // neighbouring triangles where the shape is smooth.
   double crease_angle = 60.0;
+  // Every interval 1 whatever the knots: the cage as a Catmull-Clark cage.
+  // For models with non-uniform knots (a reduced model), whose limit
+  // surface the non-uniform rules would give and which are not written yet.
+  bool equal_intervals = false;
 };
 
 // Inputs: a conforming model and a label (index into mp.labels). Output: the

@@ -20,7 +20,7 @@ void limit_to_mesh(const spline::Cage& cage, const mesh::TriMesh& mesh, const Li
   detail::Tree tree(tris.begin(), tris.end());
   tree.accelerate_distance_queries();
   const std::vector<spline::LimitLocation> at = spline::face_grid(cage, o.samples_per_face, false);
-  const Eigen::MatrixXd X = spline::limit_stencils(cage, at, o.limit).value * cage.points;
+  const Eigen::MatrixXd X = spline::limit_stencils(cage, at, spline::values_only(o.limit)).value * cage.points;
   for (size_t i = 0; i < at.size(); ++i) {
     const Eigen::Vector3d x = X.row(static_cast<int>(i)).transpose();
     const Eigen::Vector3d q = detail::vec(tree.closest_point(detail::pt(x)));
@@ -39,7 +39,7 @@ struct Tessellation {
 Tessellation tessellate(const spline::Cage& cage, const LimitFidelityOptions& o) {
   const int n = o.tessellation_per_face + 1;
   const std::vector<spline::LimitLocation> at = spline::face_grid(cage, n, true);
-  const Eigen::MatrixXd X = spline::limit_stencils(cage, at, o.limit).value * cage.points;
+  const Eigen::MatrixXd X = spline::limit_stencils(cage, at, spline::values_only(o.limit)).value * cage.points;
   Tessellation t;
   for (size_t f = 0; f < cage.faces.size(); ++f)
     for (int j = 0; j + 1 < n; ++j)
@@ -82,7 +82,7 @@ void mesh_to_limit(const spline::Cage& cage, const mesh::TriMesh& mesh, const Li
     stepped[v].s = std::clamp(guess[v].s + d[0], 0.0, 1.0);
     stepped[v].t = std::clamp(guess[v].t + d[1], 0.0, 1.0);
   }
-  const Eigen::MatrixXd Y = spline::limit_stencils(cage, stepped, o.limit).value * cage.points;
+  const Eigen::MatrixXd Y = spline::limit_stencils(cage, stepped, spline::values_only(o.limit)).value * cage.points;
   for (int v = 0; v < mesh.V.rows(); ++v) {
     const Eigen::Vector3d p = mesh.V.row(v).transpose();
     const double before = (X.row(v).transpose() - p).norm(), after = (Y.row(v).transpose() - p).norm();

@@ -39,9 +39,7 @@ PairSystem pair_system(const Cage& cage, const FitPairsFn& pairs, const LimitOpt
     at[i] = p[i].at;
     s.targets.row(static_cast<int>(i)) = p[i].target.transpose();
   }
-  LimitOptions value_only = limit;
-  value_only.second_derivatives = false;
-  s.A = limit_stencils(cage, at, value_only).value;
+  s.A = limit_stencils(cage, at, values_only(limit)).value;
   return s;
 }
 

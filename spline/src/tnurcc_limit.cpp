@@ -1,7 +1,9 @@
 #include "igaprep/spline/tnurcc_limit.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <memory>
+#include <utility>
 #include <opensubdiv/far/stencilTable.h>
 #include <opensubdiv/far/stencilTableFactory.h>
 #include <opensubdiv/far/topologyDescriptor.h>
@@ -47,14 +49,29 @@ std::unique_ptr<Far::TopologyRefiner> adaptive_refiner(const Cage& cage, int iso
   return refiner;
 }
 
+// OpenSubdiv's stencils (rows of control indices and weights) as a
+// row-major sparse matrix, filled in place: each row's entries sorted by
+// column, as Eigen's compressed format wants.
 StencilMatrix to_sparse(int rows, int cols, const std::vector<int>& sizes, const std::vector<int>& offsets,
                         const std::vector<int>& indices, const std::vector<double>& weights) {
-  std::vector<Eigen::Triplet<double>> t;
-  t.reserve(weights.size());
-  for (int r = 0; r < rows; ++r)
-    for (int k = 0; k < sizes[r]; ++k) t.emplace_back(r, indices[offsets[r] + k], weights[offsets[r] + k]);
   StencilMatrix m(rows, cols);
-  m.setFromTriplets(t.begin(), t.end());
+  long nnz = 0;
+  for (int r = 0; r < rows; ++r) nnz += sizes[r];
+  m.resizeNonZeros(nnz);
+  std::vector<std::pair<int, double>> row;
+  long at = 0;
+  for (int r = 0; r < rows; ++r) {
+    m.outerIndexPtr()[r] = static_cast<int>(at);
+    row.clear();
+    for (int k = 0; k < sizes[r]; ++k) row.emplace_back(indices[offsets[r] + k], weights[offsets[r] + k]);
+    std::sort(row.begin(), row.end());
+    for (const auto& [c, w] : row) {
+      m.innerIndexPtr()[at] = c;
+      m.valuePtr()[at] = w;
+      ++at;
+    }
+  }
+  m.outerIndexPtr()[rows] = static_cast<int>(at);
   return m;
 }
 
@@ -86,7 +103,7 @@ LimitStencils limit_stencils(const Cage& cage, const std::vector<LimitLocation>&
     ++arrays.back().numLocations;
   }
   Factory::Options opts;
-  opts.generate1stDerivatives = true;
+  opts.generate1stDerivatives = options.first_derivatives || options.second_derivatives;
   opts.generate2ndDerivatives = options.second_derivatives;
   std::unique_ptr<const Far::LimitStencilTableReal<double>> table(
       at.empty() ? nullptr : Factory::Create(*refiner, arrays, nullptr, nullptr, opts));
@@ -101,8 +118,10 @@ LimitStencils limit_stencils(const Cage& cage, const std::vector<LimitLocation>&
   const auto& offsets = table->GetOffsets();
   const auto& idx = table->GetControlIndices();
   out.value = to_sparse(rows, cols, sizes, offsets, idx, table->GetWeights());
-  out.ds = to_sparse(rows, cols, sizes, offsets, idx, table->GetDuWeights());
-  out.dt = to_sparse(rows, cols, sizes, offsets, idx, table->GetDvWeights());
+  if (opts.generate1stDerivatives) {
+    out.ds = to_sparse(rows, cols, sizes, offsets, idx, table->GetDuWeights());
+    out.dt = to_sparse(rows, cols, sizes, offsets, idx, table->GetDvWeights());
+  }
   if (options.second_derivatives) {
     out.dss = to_sparse(rows, cols, sizes, offsets, idx, table->GetDuuWeights());
     out.dst = to_sparse(rows, cols, sizes, offsets, idx, table->GetDuvWeights());
@@ -111,7 +130,15 @@ LimitStencils limit_stencils(const Cage& cage, const std::vector<LimitLocation>&
   return out;
 }
 
+LimitOptions values_only(LimitOptions options) {
+  options.first_derivatives = false;
+  options.second_derivatives = false;
+  return options;
+}
+
 LimitValues limit_values(const LimitStencils& st, const Eigen::MatrixXd& cage_points) {
+  if (st.ds.rows() != st.value.rows())
+    throw bad_input("T-NURCC limit: normals need the first derivatives' stencils (LimitOptions::first_derivatives)");
   LimitValues v;
   v.point = st.value * cage_points;
   const Eigen::MatrixXd du = st.ds * cage_points, dv = st.dt * cage_points;

@@ -23,15 +23,19 @@ struct LimitLocation {
 
 using StencilMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 
-// Rows: locations; columns: cage points. Second derivatives only when asked.
+// Rows: locations; columns: cage points. Derivatives only when asked.
 struct LimitStencils {
   StencilMatrix value, ds, dt, dss, dst, dtt;
 };
 
 struct LimitOptions {
   int isolation_level = 6;  // adaptive refinement around irregular features
-  bool second_derivatives = false;
+  bool first_derivatives = true;    // ds, dt (normals)
+  bool second_derivatives = false;  // dss, dst, dtt (curvature); implies the first
 };
+
+// The options with values only (no derivatives): what a fit or a distance needs.
+LimitOptions values_only(LimitOptions options);
 
 // Throws bad_input when the cage's intervals are not all equal (OpenSubdiv
 // has uniform rules only; non-uniform refinement is tnurcc_refine.h's) or

@@ -1,9 +1,9 @@
 #include "igaprep/mesh/sharp_edges.h"
 
 #include <Eigen/Geometry>
-#include <cmath>
 #include <unordered_map>
 
+#include "igaprep/core/angle.h"
 #include "igaprep/core/edge_key.h"
 
 namespace igaprep::mesh {
@@ -22,7 +22,7 @@ std::vector<std::array<Eigen::Vector3d, 2>> sharp_edges(const TriMesh& mesh, dou
       const auto [it, added] = first_face.emplace(edge_key(a, b), f);
       if (added) continue;
       const Eigen::Vector3d &n = normal[it->second], &m = normal[f];
-      if (std::atan2(n.cross(m).norm(), n.dot(m)) * 180.0 / M_PI > angle_degrees)
+      if (igaprep::angle_degrees(n, m) > angle_degrees)
         out.push_back({{mesh.V.row(a).transpose(), mesh.V.row(b).transpose()}});
     }
   return out;

@@ -11,6 +11,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseLU>
 
+#include "igaprep/core/angle.h"
 #include "igaprep/core/edge_key.h"
 #include "igaprep/core/error.h"
 #include "igaprep/param/harmonic_field.h"
@@ -591,7 +592,7 @@ Eigen::MatrixXd harmonic_uv(const mesh::TriMesh& m, const Eigen::MatrixXd& fixed
       const int i = m.F(f, k), j = m.F(f, (k + 1) % 3), l = m.F(f, (k + 2) % 3);
       if (fixed[static_cast<std::size_t>(i)]) continue;
       const Eigen::Vector3d eij = P(m, j) - P(m, i), eil = P(m, l) - P(m, i);
-      const double angle = std::atan2(eij.cross(eil).norm(), eij.dot(eil));
+      const double angle = angle_radians(eij, eil);
       const double t = std::tan(0.5 * angle);
       // angle at i lies between edges ij and il: it contributes to both weights
       trip.emplace_back(i, j, -t / eij.norm());

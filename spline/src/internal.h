@@ -1,8 +1,6 @@
 #pragma once
 // Helpers shared by the spline sources (not installed API).
 #include <Eigen/Core>
-#include <Eigen/Geometry>
-#include <cmath>
 
 #include "igaprep/spline/multipatch.h"
 
@@ -27,12 +25,6 @@ inline void set_from_homogeneous(const Eigen::MatrixXd& H, Patch* p) {
     p->weights.resize(0);
     p->control_points = H;
   }
-}
-
-// The angle between two vectors in degrees; atan2 rather than acos, so that
-// nearly parallel normals are measured exactly.
-inline double angle_degrees(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  return std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / M_PI;
 }
 
 }  // namespace igaprep::spline::detail

@@ -7,11 +7,11 @@
 #include <unordered_map>
 
 #include "igaprep/core/edge_key.h"
+#include "igaprep/core/angle.h"
 #include "igaprep/core/error.h"
 #include "igaprep/spline/curve_surface.h"
 #include "igaprep/spline/multipatch_topology.h"
 
-#include "internal.h"
 
 namespace igaprep::spline {
 namespace {
@@ -155,7 +155,7 @@ void mark_creases(Cage& cage, double crease_angle) {
     if (f[1] < 0) continue;
     const CageFaceOrigin &a = cage.origin[f[0]], &b = cage.origin[f[1]];
     if (a.patch == b.patch && a.side == b.side) continue;
-    if (detail::angle_degrees(face_normal(cage, f[0]), face_normal(cage, f[1])) > crease_angle)
+    if (angle_degrees(face_normal(cage, f[0]), face_normal(cage, f[1])) > crease_angle)
       cage.edges[e].sharpness = kInfiniteSharpness;
   }
 }

@@ -4,10 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "igaprep/core/angle.h"
 #include "igaprep/spline/evaluate.h"
 #include "igaprep/spline/knot_vector.h"
 
-#include "internal.h"
 
 namespace igaprep::spline {
 namespace {
@@ -83,7 +83,7 @@ NormalJumps model_normal_jumps(const MultiPatch& mp, const Cage& cage, int sampl
     for (double a : fractions(samples)) {
       const SidePoint p = side_point(mp, cage, e.faces[0], v0, v1, a);
       const SidePoint q = side_point(mp, cage, e.faces[1], v0, v1, a);
-      add(j, detail::angle_degrees(p.normal, q.normal), (p.x - q.x).norm(), p.x);
+      add(j, angle_degrees(p.normal, q.normal), (p.x - q.x).norm(), p.x);
     }
   }
   finish(j);
@@ -111,7 +111,7 @@ NormalJumps limit_normal_jumps(const Cage& cage, JumpEdges edges, int samples, c
   if (at.empty()) return j;
   const LimitValues v = limit_values(limit_stencils(cage, at, options), cage.points);
   for (int i = 0; i + 1 < v.point.rows(); i += 2)
-    add(j, detail::angle_degrees(v.normal.row(i).transpose(), v.normal.row(i + 1).transpose()),
+    add(j, angle_degrees(v.normal.row(i).transpose(), v.normal.row(i + 1).transpose()),
         (v.point.row(i) - v.point.row(i + 1)).norm(), v.point.row(i).transpose());
   finish(j);
   return j;

@@ -14,6 +14,7 @@
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/mesh/read_surface.h"
 #include "igaprep/pipeline/tnurcc.h"
+#include "igaprep/spline/label_sides.h"
 #include "print_observer.h"
 
 namespace igaprep::cli {
@@ -27,15 +28,13 @@ struct TnurccArgs {
 
 // A label given by name or by index.
 int find_label(const spline::MultiPatch& mp, const std::string& name) {
-  for (int l = 0; l < static_cast<int>(mp.labels.size()); ++l)
-    if (mp.labels[l] == name) return l;
-  if (!name.empty() && name.find_first_not_of("0123456789") == std::string::npos) {
-    const int l = std::stoi(name);
-    if (l < static_cast<int>(mp.labels.size())) return l;
-  }
-  std::string known;
-  for (const auto& l : mp.labels) known += (known.empty() ? "" : ", ") + l;
-  throw bad_input("--surface " + name + ": the model has no such label (its labels: " + known + ")");
+  int label = spline::label_index(mp, name);
+  if (label < 0 && !name.empty() && name.find_first_not_of("0123456789") == std::string::npos &&
+      std::stoul(name) < mp.labels.size())
+    label = std::stoi(name);
+  if (label < 0)
+    throw bad_input("--surface " + name + ": the model has no such label (its labels: " + spline::label_list(mp) + ")");
+  return label;
 }
 
 int run_tnurcc(TnurccArgs a) {

@@ -7,23 +7,20 @@
 #include "igaprep/iga_check/fidelity.h"
 #include "igaprep/iga_check/report.h"
 #include "igaprep/spline/knot_vector.h"
+#include "igaprep/spline/label_sides.h"
 #include "igaprep/spline/multipatch_topology.h"
 
 namespace igaprep::iga_check::detail {
 
 namespace {
 
-std::string label_list(const spline::MultiPatch& mp) {
-  std::string s;
-  for (size_t i = 0; i < mp.labels.size(); ++i) s += (i ? ", " : "") + mp.labels[i];
-  return s.empty() ? "none" : s;
-}
-
 // Index of a label by name; bad_input naming the known labels otherwise.
 int find_label(const spline::MultiPatch& mp, const std::string& name, const char* what) {
-  for (size_t i = 0; i < mp.labels.size(); ++i)
-    if (mp.labels[i] == name) return static_cast<int>(i);
-  throw bad_input(std::string(what) + ": unknown label '" + name + "' (labels of the model: " + label_list(mp) + ")");
+  const int label = spline::label_index(mp, name);
+  if (label < 0)
+    throw bad_input(std::string(what) + ": unknown label '" + name + "' (labels of the model: " +
+                    spline::label_list(mp) + ")");
+  return label;
 }
 
 std::vector<LameParameters> check_materials(const spline::MultiPatch& mp) {

@@ -11,25 +11,14 @@
 #include "igaprep/core/text.h"
 #include "igaprep/export/tnurcc_files.h"
 #include "igaprep/mesh/sharp_edges.h"
+#include "igaprep/spline/label_sides.h"
 #include "igaprep/spline/tnurcc_fit.h"
 
 namespace igaprep::pipeline {
 namespace {
 
-bool stands_for(const spline::MultiPatch& mp, int label) {
-  for (const auto& b : mp.boundaries)
-    if (b.label == label) return true;
-  for (const auto& itf : mp.interfaces)
-    if (itf.surface == label) return true;
-  return false;
-}
-
 std::vector<int> labels_to_build(const spline::MultiPatch& mp, const TnurccSettings& s) {
-  if (!s.labels.empty()) return s.labels;
-  std::vector<int> out;
-  for (int l = 0; l < static_cast<int>(mp.labels.size()); ++l)
-    if (stands_for(mp, l)) out.push_back(l);
-  return out;
+  return s.labels.empty() ? spline::labels_with_sides(mp) : s.labels;
 }
 
 double segment_distance(const Eigen::Vector3d& p, const std::array<Eigen::Vector3d, 2>& s) {

@@ -45,4 +45,28 @@ int label_sides(MultiPatch& mp, const std::vector<std::array<int, 6>>& side_labe
   return unmatched;
 }
 
+int label_index(const MultiPatch& mp, const std::string& name) {
+  for (size_t i = 0; i < mp.labels.size(); ++i)
+    if (mp.labels[i] == name) return static_cast<int>(i);
+  return -1;
+}
+
+std::string label_list(const MultiPatch& mp) {
+  std::string s;
+  for (size_t i = 0; i < mp.labels.size(); ++i) s += (i ? ", " : "") + mp.labels[i];
+  return s.empty() ? "none" : s;
+}
+
+std::vector<int> labels_with_sides(const MultiPatch& mp) {
+  std::vector<bool> used(mp.labels.size(), false);
+  for (const auto& b : mp.boundaries)
+    if (b.label >= 0 && b.label < static_cast<int>(used.size())) used[b.label] = true;
+  for (const auto& itf : mp.interfaces)
+    if (itf.surface >= 0 && itf.surface < static_cast<int>(used.size())) used[itf.surface] = true;
+  std::vector<int> out;
+  for (size_t l = 0; l < used.size(); ++l)
+    if (used[l]) out.push_back(static_cast<int>(l));
+  return out;
+}
+
 }  // namespace igaprep::spline

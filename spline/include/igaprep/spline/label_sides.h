@@ -2,6 +2,7 @@
 // Labels of a fitted multipatch model's sides: which input surface each
 // material interface lies on, and which boundary label each outer side has.
 #include <array>
+#include <string>
 #include <vector>
 
 #include "igaprep/spline/multipatch.h"
@@ -20,5 +21,14 @@ namespace igaprep::spline {
 // nor collapsed (0 for a valid model).
 int label_sides(MultiPatch& mp, const std::vector<std::array<int, 6>>& side_labels,
                 const std::vector<std::array<bool, 6>>& collapsed);
+
+// Index of the label called `name`, or -1.
+int label_index(const MultiPatch& mp, const std::string& name);
+
+// The model's labels as "a, b, c" ("none" when it has none), for messages.
+std::string label_list(const MultiPatch& mp);
+
+// The labels that a boundary side or a material interface stands for, increasing.
+std::vector<int> labels_with_sides(const MultiPatch& mp);
 
 }  // namespace igaprep::spline

@@ -114,11 +114,13 @@ void read_decomposition_section(const json& section, const std::string& file, pa
 }
 
 void read_fit_section(const json& section, const std::string& file, spline::BlockFitOptions& fit,
-                      spline::JacobianOptimizationOptions& jacobian) {
+                      spline::SurfaceFitOptions& surface, spline::JacobianOptimizationOptions& jacobian) {
   ObjectReader r(section, "fit", file);
   fit.degree = r.integer("degree", fit.degree, 1, 5);
   fit.elements = r.integer("elements", fit.elements, 1, 32);
   fit.oversample = r.integer("oversample", fit.oversample, 1, 8);
+  surface.iterations = r.integer("surface_iterations", surface.iterations, 0, 100);
+  surface.smoothing = r.number_in("surface_smoothing", surface.smoothing, 0.0, 1e6);
   jacobian.target = r.number_in("jacobian_target", jacobian.target, 0.0, 0.9);
   jacobian.iterations = r.integer("jacobian_iterations", jacobian.iterations, 0, 100000);
   jacobian.sweeps = r.integer("jacobian_sweeps", jacobian.sweeps, 0, 1000);

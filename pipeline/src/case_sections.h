@@ -21,6 +21,6 @@ param::MidsurfaceOptions read_midsurface_section(const nlohmann::json& section, 
 void read_decomposition_section(const nlohmann::json& section, const std::string& file, param::BaseSurfaceOptions& base,
                                 param::VolumeParamOptions& volume);
 void read_fit_section(const nlohmann::json& section, const std::string& file, spline::BlockFitOptions& fit,
-                      spline::JacobianOptimizationOptions& jacobian);
+                      spline::SurfaceFitOptions& surface, spline::JacobianOptimizationOptions& jacobian);
 
 }  // namespace igaprep::pipeline

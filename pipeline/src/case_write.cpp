@@ -135,6 +135,7 @@ void add_stage_options(const Case& c, json& root) {
                            {"spread_deviation", v.spread_deviation}};
   if (v.w0 >= 0.0) root["decomposition"]["w0"] = v.w0;  // absent: midway, at least 0.75
   root["fit"] = {{"degree", c.fit.degree}, {"elements", c.fit.elements}, {"oversample", c.fit.oversample},
+                 {"surface_iterations", c.surface_fit.iterations}, {"surface_smoothing", c.surface_fit.smoothing},
                  {"jacobian_target", c.jacobian.target}, {"jacobian_iterations", c.jacobian.iterations},
                  {"jacobian_sweeps", c.jacobian.sweeps},
                  {"jacobian_points", c.jacobian.points}};

@@ -68,6 +68,12 @@ iga_check::PipelineSection pipeline_section(const Case& c, const param::Midsurfa
   add("unmatched_sides", fit.unmatched_sides);
   add("stitched_control_points", fit.stitched);
   add("max_stitch", fit.max_stitch);
+  for (std::size_t i = 0; i < fit.surface_fits.size(); ++i) {  // fit_model_surface, per surface that has faces
+    const auto& rms = fit.surface_fits[i].rms;
+    if (rms.empty()) continue;
+    add("surface_fit_rms_before_" + std::to_string(i), rms.front());
+    add("surface_fit_rms_after_" + std::to_string(i), rms.back());
+  }
   if (c.jacobian.target > 0.0) {  // optimize_jacobians: its own samples' lowest scaled Jacobian before and after
     add("fit_min_scaled_jacobian", fit.jacobians.min_before);
     add("optimized_min_scaled_jacobian", fit.jacobians.min_after);
@@ -229,7 +235,7 @@ void run_stages(const Case& c, Observer& outer, OutputFolder* folder, RunResult&
   const Decomposition d = decompose_stage(c, surfaces, base, observer);
   r.rectangles = static_cast<int>(d.layout.rectangles.size());
   r.boundary_segments = static_cast<int>(d.layout.crests.size());
-  Fit fit = fit_stage(c, d, param_stage(c, surfaces, d, observer), observer);
+  Fit fit = fit_stage(c, surfaces, d, param_stage(c, surfaces, d, observer), observer);
   fill_provenance(c, fit.model);
 
   std::optional<ReduceFigures> reduced;

@@ -1,3 +1,4 @@
+#include "igaprep/iga_check/surface_fit_pairs.h"
 #include "igaprep/param/surface_projector.h"
 #include "igaprep/pipeline/volume.h"
 #include "igaprep/spline/block_fit.h"
@@ -31,6 +32,15 @@ int connect_and_label(const param::VolumeParam& vp, double diag, spline::MultiPa
   return spline::label_sides(mp, labels, collapsed);
 }
 
+// Sides (patch, side) collapsed to a curve or point: their control points stay.
+std::vector<std::pair<int, spline::Side>> collapsed_sides(const param::VolumeParam& vp) {
+  std::vector<std::pair<int, spline::Side>> fixed;
+  for (std::size_t p = 0; p < vp.blocks.size(); ++p)
+    for (const spline::Side side : spline::Side::all())
+      if (vp.blocks[p].collapsed[static_cast<std::size_t>(side.index() - 1)]) fixed.emplace_back(static_cast<int>(p), side);
+  return fixed;
+}
+
 // Moves the control points where the sampled scaled Jacobian is below the
 // case's target (optimize_jacobian.h): those on T1 and the Ti slide along
 // them, collapsed sides stay.
@@ -40,18 +50,33 @@ spline::JacobianOptimizationResult raise_jacobians(const Case& c, const Decompos
   auto slide = [&](int surface, const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
     return surfaces.at(static_cast<std::size_t>(surface)).slide(from, to);
   };
-  std::vector<std::pair<int, spline::Side>> fixed;
-  for (std::size_t p = 0; p < vp.blocks.size(); ++p)
-    for (const spline::Side side : spline::Side::all())
-      if (vp.blocks[p].collapsed[static_cast<std::size_t>(side.index() - 1)]) fixed.emplace_back(static_cast<int>(p), side);
   spline::JacobianOptimizationOptions options = c.jacobian;
   options.progress = progress_to(observer);
-  return spline::optimize_jacobians(mp, slide, fixed, options);
+  return spline::optimize_jacobians(mp, slide, collapsed_sides(vp), options);
+}
+
+// The faces on each input surface fitted to it, then the other control
+// points moved with them so the elements next to the surfaces keep their shape.
+std::vector<spline::SurfaceFitResult> fit_surfaces(const Case& c, const Surfaces& surfaces,
+                                                   const param::VolumeParam& vp, spline::MultiPatch& mp) {
+  const spline::MultiPatch before = mp;
+  const auto fixed = collapsed_sides(vp);
+  std::vector<spline::SurfaceFitResult> out;
+  for (std::size_t s = 0; s < surfaces.inputs.size(); ++s) {
+    const int label = static_cast<int>(s);
+    auto pairs = [&](const spline::MultiPatch& now) {
+      return iga_check::surface_fit_pairs(now, label, surfaces.inputs[s]);
+    };
+    out.push_back(spline::fit_model_surface(mp, label, pairs, fixed, c.surface_fit));
+  }
+  spline::carry_moves_inside(mp, before, fixed);
+  return out;
 }
 
 }  // namespace
 
-Fit fit_stage(const Case& c, const Decomposition& d, const param::VolumeParam& vp, Observer& observer) {
+Fit fit_stage(const Case& c, const Surfaces& surfaces, const Decomposition& d, const param::VolumeParam& vp,
+              Observer& observer) {
   StageTimer timer;
   Fit out;
   spline::MultiPatch& mp = out.model;
@@ -65,7 +90,19 @@ Fit fit_stage(const Case& c, const Decomposition& d, const param::VolumeParam& v
                       mp.patches.size(), c.fit.degree, c.fit.elements, mp.interfaces.size(), out.stitched,
                       out.max_stitch, mp.boundaries.size(), out.unmatched_sides, c.surfaces.size()),
                  {}};
-  if (c.jacobian.target > 0.0) {
+  auto fit_to_surfaces = [&] {
+    StageTimer st;
+    out.surface_fits = fit_surfaces(c, surfaces, vp, mp);
+    for (std::size_t i = 0; i < out.surface_fits.size(); ++i) {
+      const auto& r = out.surface_fits[i];
+      if (r.rms.empty()) continue;
+      s.details.push_back(text("surface '%s' fitted: rms distance of the pairs %.3g -> %.3g in %d iterations, %d "
+                               "control points free, moved at most %.2g (%.2f s so far)",
+                               c.surfaces[i].label.c_str(), r.rms.front(), r.rms.back(), r.iterations, r.moved_points,
+                               r.max_move, st.seconds()));
+    }
+  };
+  auto repair = [&] {
     StageTimer jt;
     out.jacobians = raise_jacobians(c, d, vp, mp, observer);
     const auto& r = out.jacobians;
@@ -76,7 +113,9 @@ Fit fit_stage(const Case& c, const Decomposition& d, const param::VolumeParam& v
                              r.below_after, r.moved_points, r.max_move, r.dense_patches, r.joint_variables,
                              r.joint_iterations, r.joint_stop.empty() ? "off" : r.joint_stop.c_str(), r.sweeps,
                              r.stop_reason.c_str()));
-  }
+  };
+  if (c.surface_fit.iterations > 0) fit_to_surfaces();
+  if (c.jacobian.target > 0.0) repair();
   s.seconds = timer.seconds();
   observer.stage_finished(s);
   return out;

@@ -95,6 +95,8 @@ TEST(Case, BadKeysAreRefusedByName) {
       {R"(, "fit": {"jacobian_sweeps": 2.5})", "fit.jacobian_sweeps"},
       {R"(, "fit": {"jacobian_iterations": -1})", "fit.jacobian_iterations"},
       {R"(, "fit": {"jacobian_points": 1})", "fit.jacobian_points"},
+      {R"(, "fit": {"surface_iterations": -1})", "fit.surface_iterations"},
+      {R"(, "fit": {"surface_smoothing": -0.1})", "fit.surface_smoothing"},
       {R"(, "tnurcc": {"crease_angle": 200})", "'tnurcc.crease_angle' must be a number in"},
       {R"(, "tnurcc": {"fit": true})", "unknown key 'tnurcc.fit'"},
       {R"(, "reduce": {"tolerance": 0.01}, "tnurcc": {})", "'tnurcc' after 'reduce' needs \"equal_intervals\": true"},
@@ -153,7 +155,7 @@ TEST(Case, RepeatedKeysLabelsHugeNumbersAndNonRegularFilesAreRefused) {
 
 TEST(Case, ValuesAreReadAndPathsResolved) {
   const Case c = parse_case(sphere2_case(R"(, "output": "out", "decomposition": {"inset": 0.4, "strategy": 1, "max_aspect": 3},
-      "fit": {"elements": 4, "jacobian_target": 0}, "midsurface": {"cut": {"plane": {"point": [0, 0, 0.1],
+      "fit": {"elements": 4, "jacobian_target": 0, "surface_iterations": 3, "surface_smoothing": 0.5}, "midsurface": {"cut": {"plane": {"point": [0, 0, 0.1],
       "normal": [0, 0, 2]}}}, "validation": {"solver": "cg", "patches": 0})"),
                             models_dir() + "/sphere2", "case.json");
   EXPECT_EQ(c.name, "sphere2-case");
@@ -165,6 +167,8 @@ TEST(Case, ValuesAreReadAndPathsResolved) {
   EXPECT_EQ(c.volume.strategy, 1);
   EXPECT_EQ(c.fit.elements, 4);
   EXPECT_EQ(c.jacobian.target, 0.0);
+  EXPECT_EQ(c.surface_fit.iterations, 3);
+  EXPECT_EQ(c.surface_fit.smoothing, 0.5);
   EXPECT_EQ(c.midsurface.cut, igaprep::param::MidsurfaceOptions::CutKind::Plane);
   EXPECT_EQ(c.midsurface.plane.normal.z(), 2.0);
   EXPECT_EQ(c.validation.solver, igaprep::pipeline::SolverChoice::ConjugateGradient);

@@ -17,6 +17,7 @@
 #include "igaprep/pipeline/reduce.h"
 #include "igaprep/pipeline/tnurcc.h"
 #include "igaprep/spline/block_fit.h"
+#include "igaprep/spline/fit_model_surface.h"
 #include "igaprep/spline/optimize_jacobian.h"
 
 namespace igaprep::pipeline {
@@ -105,6 +106,7 @@ struct Case {
   param::BaseSurfaceOptions base;       // section "decomposition": inset, smoothing, sliding_uv
   param::VolumeParamOptions volume;     // section "decomposition" (docs/decomposition.md)
   spline::BlockFitOptions fit;          // section "fit"
+  spline::SurfaceFitOptions surface_fit;         // section "fit", keys surface_* (iterations 0: off)
   spline::JacobianOptimizationOptions jacobian;  // section "fit", keys jacobian_*
   // Section "export": besides model.h5, in order. Default: model.vtu, so
   // that a first run has something to open in ParaView; [] writes none.

@@ -28,6 +28,7 @@ struct Fit {
   int stitched = 0;          // side control points made identical by stitching
   double max_stitch = 0.0;   // the largest such move
   int unmatched_sides = 0;   // sides neither on an interface nor labelled (0 for a valid model)
+  std::vector<spline::SurfaceFitResult> surface_fits;  // per input surface, what fit_model_surface did (empty when off)
   spline::JacobianOptimizationResult jacobians;  // what optimize_jacobians did (all zero when off)
 };
 
@@ -41,8 +42,11 @@ Decomposition decompose_stage(const Case& c, const Surfaces& surfaces, const par
 // decomposition_blocks, decomposition_blocks_faces.
 param::VolumeParam param_stage(const Case& c, const Surfaces& surfaces, const Decomposition& d, Observer& observer);
 
-// The blocks fitted, stitched, their interfaces found and sides labelled,
+// The blocks fitted, stitched, their interfaces found and sides labelled;
+// then the faces on each input surface fitted to it (fit_model_surface,
+// the moves carried inside) when the case's surface_iterations are above 0;
 // then optimize_jacobians when the case's target is above 0.
-Fit fit_stage(const Case& c, const Decomposition& d, const param::VolumeParam& vp, Observer& observer);
+Fit fit_stage(const Case& c, const Surfaces& surfaces, const Decomposition& d, const param::VolumeParam& vp,
+              Observer& observer);
 
 }  // namespace igaprep::pipeline

@@ -1,0 +1,341 @@
+#include "igaprep/spline/fit_model_surface.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <cmath>
+
+#include "igaprep/core/error.h"
+#include "igaprep/spline/basis.h"
+#include "igaprep/spline/evaluate.h"
+#include "igaprep/spline/curve_surface.h"
+#include "igaprep/spline/knot_vector.h"
+#include "igaprep/spline/multipatch_topology.h"
+
+namespace igaprep::spline {
+namespace {
+
+using Sparse = Eigen::SparseMatrix<double>;
+using Faces = std::vector<std::pair<int, Side>>;
+
+// The faces standing for the surfaces whose label passes `keep`: boundary
+// sides with that label, then interfaces lying on it, each from the side of
+// the material inside the surface (material s lies inside surface s), so
+// that every face's outward normal is the surface's.
+template <class Keep>
+Faces faces_of(const MultiPatch& mp, Keep keep) {
+  Faces out;
+  for (const auto& b : mp.boundaries)
+    if (b.label >= 0 && keep(b.label)) out.emplace_back(b.patch, b.side);
+  for (const auto& itf : mp.interfaces)
+    if (itf.surface >= 0 && keep(itf.surface)) {
+      const bool a_inside = mp.patches.at(static_cast<size_t>(itf.patch_a)).material == itf.surface;
+      out.emplace_back(a_inside ? itf.patch_a : itf.patch_b, a_inside ? itf.side_a : itf.side_b);
+    }
+  return out;
+}
+
+void mark_faces(const MultiPatch& mp, const GlobalNumbering& gn, const Faces& faces, std::vector<char>& mark) {
+  for (const auto& [patch, side] : faces)
+    for (int local : side_control_points(mp.patches.at(static_cast<size_t>(patch)), side))
+      mark[static_cast<size_t>(gn.global[static_cast<size_t>(patch)][static_cast<size_t>(local)])] = 1;
+}
+
+Eigen::MatrixXd global_points(const MultiPatch& mp, const GlobalNumbering& gn) {
+  Eigen::MatrixXd X(gn.count, 3);
+  for (size_t p = 0; p < mp.patches.size(); ++p)
+    for (int i = 0; i < mp.patches[p].control_points.rows(); ++i)
+      X.row(gn.global[p][static_cast<size_t>(i)]) = mp.patches[p].control_points.row(i);
+  return X;
+}
+
+// Writes the global points back into every patch: shared points stay identical.
+void scatter(const Eigen::MatrixXd& X, const GlobalNumbering& gn, MultiPatch& mp) {
+  for (size_t p = 0; p < mp.patches.size(); ++p)
+    for (int i = 0; i < mp.patches[p].control_points.rows(); ++i)
+      mp.patches[p].control_points.row(i) = X.row(gn.global[p][static_cast<size_t>(i)]);
+}
+
+// Global number of every free point's column (-1: held), and back.
+struct Columns {
+  std::vector<int> of_point, point;
+};
+
+Columns free_columns(const std::vector<char>& on_faces, const std::vector<char>& held) {
+  Columns c;
+  c.of_point.assign(on_faces.size(), -1);
+  for (size_t g = 0; g < on_faces.size(); ++g)
+    if (on_faces[g] && !held[g]) {
+      c.of_point[g] = static_cast<int>(c.point.size());
+      c.point.push_back(static_cast<int>(g));
+    }
+  return c;
+}
+
+// The rows of the pairs over all global points: the face's basis (rational
+// where the patch is) at the pair's parameters.
+Sparse pair_rows(const MultiPatch& mp, const GlobalNumbering& gn, const std::vector<SurfaceFitPair>& pairs) {
+  std::vector<Eigen::Triplet<double>> t;
+  for (size_t r = 0; r < pairs.size(); ++r) {
+    const SurfaceFitPair& q = pairs[r];
+    if (q.patch < 0 || q.patch >= static_cast<int>(mp.patches.size()))
+      throw bad_input("fit_model_surface: a pair names patch " + std::to_string(q.patch) + ", which does not exist");
+    const Patch& P = mp.patches[static_cast<size_t>(q.patch)];
+    const std::array<int, 2> dirs = q.side.tangent_directions();
+    const std::vector<int> local = side_control_points(P, q.side);
+    const int n0 = basis_count(P.knots[dirs[0]], P.degrees[dirs[0]]);
+    std::array<int, 2> span{};
+    std::array<Eigen::VectorXd, 2> N;
+    for (int d = 0; d < 2; ++d) {
+      const auto& U = P.knots[static_cast<size_t>(dirs[d])];
+      const int p = P.degrees[static_cast<size_t>(dirs[d])];
+      span[d] = find_span(U, p, q.uv[d]);
+      N[d] = basis_functions(U, p, span[d], q.uv[d]);
+    }
+    const int p0 = P.degrees[dirs[0]], p1 = P.degrees[dirs[1]];
+    std::vector<std::pair<int, double>> row;
+    double sum = 0.0;
+    for (int j = 0; j <= p1; ++j)
+      for (int i = 0; i <= p0; ++i) {
+        const int l = local[static_cast<size_t>((span[0] - p0 + i) + n0 * (span[1] - p1 + j))];
+        const double w = N[0][i] * N[1][j] * (P.rational() ? P.weights[l] : 1.0);
+        row.emplace_back(gn.global[static_cast<size_t>(q.patch)][static_cast<size_t>(l)], w);
+        sum += w;
+      }
+    for (const auto& [g, w] : row) t.emplace_back(static_cast<int>(r), g, w / sum);
+  }
+  Sparse A(static_cast<int>(pairs.size()), gn.count);
+  A.setFromTriplets(t.begin(), t.end());
+  return A;
+}
+
+// Unique neighbour pairs (a < b) of the faces' control nets.
+std::vector<std::pair<int, int>> face_net_edges(const MultiPatch& mp, const GlobalNumbering& gn, const Faces& faces) {
+  std::vector<std::pair<int, int>> e;
+  for (const auto& [patch, side] : faces) {
+    const Patch& P = mp.patches[static_cast<size_t>(patch)];
+    const std::array<int, 2> dirs = side.tangent_directions();
+    const std::vector<int> local = side_control_points(P, side);
+    const int n0 = basis_count(P.knots[dirs[0]], P.degrees[dirs[0]]);
+    const int n1 = static_cast<int>(local.size()) / n0;
+    auto g = [&](int i, int j) { return gn.global[static_cast<size_t>(patch)][static_cast<size_t>(local[static_cast<size_t>(i + n0 * j)])]; };
+    for (int j = 0; j < n1; ++j)
+      for (int i = 0; i < n0; ++i) {
+        if (i + 1 < n0) e.emplace_back(std::minmax(g(i, j), g(i + 1, j)));
+        if (j + 1 < n1) e.emplace_back(std::minmax(g(i, j), g(i, j + 1)));
+      }
+  }
+  std::sort(e.begin(), e.end());
+  e.erase(std::unique(e.begin(), e.end()), e.end());
+  return e;
+}
+
+// Rows of the free points over all points: a point minus the mean of its
+// face-net neighbours.
+Sparse umbrella_rows(const std::vector<std::pair<int, int>>& edges, const Columns& c, int points) {
+  std::vector<int> valence(static_cast<size_t>(points), 0);
+  for (const auto& [a, b] : edges) {
+    ++valence[static_cast<size_t>(a)];
+    ++valence[static_cast<size_t>(b)];
+  }
+  std::vector<Eigen::Triplet<double>> t;
+  for (size_t k = 0; k < c.point.size(); ++k) t.emplace_back(static_cast<int>(k), c.point[k], 1.0);
+  auto add = [&](int from, int to) {
+    const int row = c.of_point[static_cast<size_t>(from)];
+    if (row >= 0) t.emplace_back(row, to, -1.0 / valence[static_cast<size_t>(from)]);
+  };
+  for (const auto& [a, b] : edges) {
+    add(a, b);
+    add(b, a);
+  }
+  Sparse L(static_cast<int>(c.point.size()), points);
+  L.setFromTriplets(t.begin(), t.end());
+  return L;
+}
+
+// The columns of A that belong to free points, in column order.
+Sparse free_part(const Sparse& A, const Columns& c) {
+  std::vector<Eigen::Triplet<double>> t;
+  for (int k = 0; k < A.outerSize(); ++k)
+    for (Sparse::InnerIterator it(A, k); it; ++it) {
+      const int col = c.of_point[static_cast<size_t>(it.col())];
+      if (col >= 0) t.emplace_back(static_cast<int>(it.row()), col, it.value());
+    }
+  Sparse out(A.rows(), static_cast<int>(c.point.size()));
+  out.setFromTriplets(t.begin(), t.end());
+  return out;
+}
+
+// The unit outward normal of the faces at each free point: each face's
+// normal at its points' Greville parameters, turned outward of its patch
+// (by the majority of its points, as a folded patch turns some), summed
+// over the faces holding the point.
+Eigen::MatrixXd free_point_normals(const MultiPatch& mp, const GlobalNumbering& gn, const Faces& faces,
+                                   const Columns& c) {
+  Eigen::MatrixXd n = Eigen::MatrixXd::Zero(static_cast<int>(c.point.size()), 3);
+  for (const auto& [patch, side] : faces) {
+    const Patch& P = mp.patches[static_cast<size_t>(patch)];
+    const std::array<int, 2> dirs = side.tangent_directions();
+    const std::vector<int> local = side_control_points(P, side);
+    const std::vector<double> g0 = greville_abscissae(P.knots[dirs[0]], P.degrees[dirs[0]]);
+    const std::vector<double> g1 = greville_abscissae(P.knots[dirs[1]], P.degrees[dirs[1]]);
+    const int d = side.direction();
+    const auto& Ud = P.knots[static_cast<size_t>(d)];
+    const double end = side.parameter() ? Ud[Ud.size() - 1] : Ud.front();
+    std::vector<Eigen::Vector3d> normal(local.size());
+    int outward = 0;
+    for (size_t k = 0; k < local.size(); ++k) {
+      Eigen::Vector3d uvw;
+      uvw[dirs[0]] = g0[k % g0.size()];
+      uvw[dirs[1]] = g1[k / g0.size()];
+      uvw[d] = end;
+      const Eigen::Matrix3d J = evaluate_jacobian(P, uvw);
+      normal[k] = J.col(dirs[0]).cross(J.col(dirs[1]));
+      const double norm = normal[k].norm();
+      if (norm > 0.0) normal[k] /= norm;
+      const Eigen::Vector3d out = side.parameter() ? Eigen::Vector3d(J.col(d)) : Eigen::Vector3d(-J.col(d));
+      outward += normal[k].dot(out) >= 0.0 ? 1 : -1;
+    }
+    for (size_t k = 0; k < local.size(); ++k) {
+      const int col = c.of_point[static_cast<size_t>(gn.global[static_cast<size_t>(patch)][static_cast<size_t>(local[k])])];
+      if (col >= 0) n.row(col) += (outward >= 0 ? 1.0 : -1.0) * normal[k].transpose();
+    }
+  }
+  for (int i = 0; i < n.rows(); ++i) {
+    const double norm = n.row(i).norm();
+    if (norm > 0.0) n.row(i) /= norm;
+  }
+  return n;
+}
+
+// The pairs' rows over the free points' normal offsets: three rows per pair
+// (x, y, z), each free column scaled by that point's normal component.
+Sparse normal_offset_rows(const Sparse& Au, const Eigen::MatrixXd& normals) {
+  std::vector<Eigen::Triplet<double>> t;
+  for (int k = 0; k < Au.outerSize(); ++k)
+    for (Sparse::InnerIterator it(Au, k); it; ++it)
+      for (int x = 0; x < 3; ++x)
+        t.emplace_back(3 * static_cast<int>(it.row()) + x, static_cast<int>(it.col()), it.value() * normals(it.col(), x));
+  Sparse B(3 * Au.rows(), Au.cols());
+  B.setFromTriplets(t.begin(), t.end());
+  return B;
+}
+
+double rms(const Eigen::MatrixXd& r) { return r.rows() ? std::sqrt(r.squaredNorm() / r.rows()) : 0.0; }
+
+Eigen::MatrixXd pair_targets(const std::vector<SurfaceFitPair>& pairs) {
+  Eigen::MatrixXd T(static_cast<int>(pairs.size()), 3);
+  for (size_t r = 0; r < pairs.size(); ++r) T.row(static_cast<int>(r)) = pairs[r].target.transpose();
+  return T;
+}
+
+}  // namespace
+
+SurfaceFitResult fit_model_surface(MultiPatch& mp, int surface, const SurfaceFitPairsFn& pairs,
+                                   const std::vector<std::pair<int, Side>>& fixed_sides,
+                                   const SurfaceFitOptions& options) {
+  SurfaceFitResult r;
+  const Faces faces = faces_of(mp, [&](int label) { return label == surface; });
+  if (faces.empty()) return r;
+  const GlobalNumbering gn = global_numbering(mp);
+  std::vector<char> on_faces(static_cast<size_t>(gn.count), 0), held(static_cast<size_t>(gn.count), 0);
+  mark_faces(mp, gn, faces, on_faces);
+  mark_faces(mp, gn, faces_of(mp, [&](int label) { return label != surface; }), held);
+  mark_faces(mp, gn, fixed_sides, held);
+  const Columns c = free_columns(on_faces, held);
+  r.moved_points = static_cast<int>(c.point.size());
+  if (c.point.empty()) return r;
+  const Sparse L = free_part(umbrella_rows(face_net_edges(mp, gn, faces), c, gn.count), c);
+  const Sparse LtL = Sparse(L.transpose()) * L;
+  const Eigen::MatrixXd normals = free_point_normals(mp, gn, faces, c);
+  const Eigen::MatrixXd X0 = global_points(mp, gn);
+  Eigen::MatrixXd X = X0;
+  std::vector<SurfaceFitPair> p = pairs(mp);
+  for (int it = 0;; ++it) {
+    const Sparse A = pair_rows(mp, gn, p);
+    const Eigen::MatrixXd T = pair_targets(p);
+    const double now = rms(T - A * X);
+    const double before = r.rms.empty() ? 0.0 : r.rms.back();
+    r.rms.push_back(now);
+    if (it == options.iterations || p.empty()) break;
+    if (it > 0 && std::abs(before - now) < options.stop_improvement * before) break;
+    // Solve for the offsets from X0 (not from X), so the fairing term sees the whole move.
+    const Sparse B = normal_offset_rows(free_part(A, c), normals);
+    const double lambda = options.smoothing * double(A.rows()) / double(c.point.size());
+    const Sparse N = Sparse(B.transpose()) * B + lambda * LtL;
+    Eigen::SimplicialLDLT<Sparse> solver(N);
+    if (solver.info() != Eigen::Success) throw internal_error("fit_model_surface: the normal equations did not factorize");
+    const Eigen::MatrixXd residual = Eigen::MatrixXd(T - A * X0).transpose();  // 3 x pairs: x, y, z per pair
+    const Eigen::VectorXd offset =
+        solver.solve(Eigen::VectorXd(B.transpose() * Eigen::Map<const Eigen::VectorXd>(residual.data(), residual.size())));
+    X = X0;
+    for (size_t k = 0; k < c.point.size(); ++k) X.row(c.point[k]) += offset[static_cast<int>(k)] * normals.row(static_cast<int>(k));
+    scatter(X, gn, mp);
+    ++r.iterations;
+    p = pairs(mp);
+  }
+  r.max_move = c.point.empty() ? 0.0 : (X - X0).rowwise().norm().maxCoeff();
+  return r;
+}
+
+void carry_moves_inside(MultiPatch& mp, const MultiPatch& before, const std::vector<std::pair<int, Side>>& fixed_sides) {
+  const GlobalNumbering gn = global_numbering(mp);
+  std::vector<char> all(static_cast<size_t>(gn.count), 1), held(static_cast<size_t>(gn.count), 0);
+  mark_faces(mp, gn, faces_of(mp, [](int) { return true; }), held);
+  mark_faces(mp, gn, fixed_sides, held);
+  const Columns c = free_columns(all, held);
+  if (c.point.empty()) return;
+  const Eigen::MatrixXd X = global_points(mp, gn), move = X - global_points(before, gn);
+  // The graph Laplacian of the patches' control nets, free rows: deg m_v - sum of neighbours' m.
+  std::vector<std::pair<int, int>> edges;
+  for (size_t p = 0; p < mp.patches.size(); ++p) {
+    const Patch& P = mp.patches[p];
+    const std::array<int, 3> n{{basis_count(P.knots[0], P.degrees[0]), basis_count(P.knots[1], P.degrees[1]),
+                                basis_count(P.knots[2], P.degrees[2])}};
+    const std::array<int, 3> stride{{1, n[0], n[0] * n[1]}};
+    for (int k = 0; k < n[2]; ++k)
+      for (int j = 0; j < n[1]; ++j)
+        for (int i = 0; i < n[0]; ++i) {
+          const std::array<int, 3> at{{i, j, k}};
+          const int l = i + stride[1] * j + stride[2] * k;
+          for (int d = 0; d < 3; ++d)
+            if (at[d] + 1 < n[d])
+              edges.emplace_back(std::minmax(gn.global[p][static_cast<size_t>(l)], gn.global[p][static_cast<size_t>(l + stride[d])]));
+        }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  const int n = static_cast<int>(c.point.size());
+  std::vector<Eigen::Triplet<double>> t;
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, 3);
+  auto add = [&](int from, int to) {
+    const int row = c.of_point[static_cast<size_t>(from)];
+    if (row < 0) return;
+    t.emplace_back(row, row, 1.0);
+    const int col = c.of_point[static_cast<size_t>(to)];
+    if (col >= 0)
+      t.emplace_back(row, col, -1.0);
+    else
+      rhs.row(row) += move.row(to);
+  };
+  for (const auto& [a, b] : edges) {
+    add(a, b);
+    add(b, a);
+  }
+  // A free part with no held point in reach has no move to follow: a tiny
+  // diagonal term keeps it where it is.
+  for (int k = 0; k < n; ++k) t.emplace_back(k, k, 1e-12);
+  Sparse K(n, n);
+  K.setFromTriplets(t.begin(), t.end());
+  Eigen::ConjugateGradient<Sparse, Eigen::Lower | Eigen::Upper> cg(K);
+  cg.setTolerance(1e-10);
+  cg.setMaxIterations(10 * n);
+  const Eigen::MatrixXd m = cg.solve(rhs);
+  if (cg.info() != Eigen::Success) throw internal_error("carry_moves_inside: conjugate gradients did not converge");
+  Eigen::MatrixXd Xn = X;
+  for (int k = 0; k < n; ++k) Xn.row(c.point[static_cast<size_t>(k)]) += m.row(k);
+  scatter(Xn, gn, mp);
+}
+
+}  // namespace igaprep::spline

@@ -362,7 +362,7 @@ void read_sections(ObjectReader& r, const std::string& file, Case& c) {
   // are not uniform, which only equal intervals cover so far.
   if (c.reduce && c.tnurcc && !c.tnurcc->equal_intervals)
     r.fail("'tnurcc' after 'reduce' needs \"equal_intervals\": true (the reduced model's knots are not uniform, "
-           "and the non-uniform T-NURCC rules are not written yet; docs/tnurcc.md)");
+           "and the limit surface of unequal knot intervals is not evaluated yet; docs/tnurcc.md)");
   if (const json* l = r.find("load_case")) {
     c.load_case = read_load_case(*l, file);
     check_load_case_labels(c, r);

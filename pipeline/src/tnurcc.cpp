@@ -129,7 +129,8 @@ std::vector<TnurccSurface> tnurcc_surfaces(const spline::MultiPatch& mp, const s
     s.name = mp.labels[label];
     if (!spline::uniform_intervals(s.cage))
       throw bad_input("T-NURCC '" + s.name + "': the model's knot vectors are not uniform (a reduced model, for one), "
-                      "and the non-uniform T-NURCC rules are not written yet; with equal_intervals its cage is taken "
+                      "and the limit surface of unequal knot intervals is not evaluated yet; with equal_intervals its cage is "
+                      "taken "
                       "as a Catmull-Clark cage (docs/tnurcc.md)");
     for (int v : spline::vertex_valences(s.cage)) s.extraordinary_vertices += v != 4;
     if (label < static_cast<int>(meshes.size()) && meshes[label].F.rows() > 0)

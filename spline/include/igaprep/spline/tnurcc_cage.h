@@ -51,7 +51,8 @@ struct CageOptions {
   double crease_angle = 60.0;
   // Every interval 1 whatever the knots: the cage as a Catmull-Clark cage.
   // For models with non-uniform knots (a reduced model), whose limit
-  // surface the non-uniform rules would give and which are not written yet.
+  // surface is not evaluated yet (OpenSubdiv's limit is Catmull-Clark's;
+  // refine_cage has the non-uniform rules).
   bool equal_intervals = false;
 };
 

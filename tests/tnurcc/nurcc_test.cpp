@@ -1,0 +1,213 @@
+// The non-uniform rules of refine_cage (NURCC: knot intervals on edges,
+// opposite edges of a face equal) against non-uniform cubic B-splines: on a
+// closed grid of valence-4 vertices the refined cage is knot insertion at
+// the middle of every interval, so the two cages' B-spline surfaces agree;
+// a crease loop's polygon refines as its B-spline curve; around
+// extraordinary vertices the opposite-edge rule holds after every step.
+// (Equal intervals: refine_test.cpp, against OpenSubdiv.)
+#include <gtest/gtest.h>
+
+#include <map>
+#include <random>
+
+#include "igaprep/spline/tnurcc_refine.h"
+#include "tnurcc/tnurcc_models.h"
+
+namespace {
+
+using namespace igaprep::spline;
+
+// A periodic grid n x m (a torus's topology): vertex (i, j) = i + n j;
+// s-edges of column i carry ds[i], t-edges of row j carry dt[j].
+struct PeriodicGrid {
+  int n = 0, m = 0;
+  std::vector<double> ds, dt;
+  Cage cage;
+  int vertex(int i, int j) const { return ((i % n + n) % n) + n * ((j % m + m) % m); }
+};
+
+PeriodicGrid periodic_grid(int n, int m, std::mt19937& rng) {
+  std::uniform_real_distribution<double> interval(0.4, 2.5), noise(-0.2, 0.2);
+  PeriodicGrid g;
+  g.n = n;
+  g.m = m;
+  for (int i = 0; i < n; ++i) g.ds.push_back(interval(rng));
+  for (int j = 0; j < m; ++j) g.dt.push_back(interval(rng));
+  g.cage.points.resize(n * m, 3);
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double a = 2 * M_PI * i / n, b = 2 * M_PI * j / m;
+      g.cage.points.row(i + n * j) << (3 + std::cos(b)) * std::cos(a) + noise(rng),
+          (3 + std::cos(b)) * std::sin(a) + noise(rng), std::sin(b) + noise(rng);
+    }
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < n; ++i)
+      g.cage.faces.push_back({{g.vertex(i, j), g.vertex(i + 1, j), g.vertex(i + 1, j + 1), g.vertex(i, j + 1)}});
+  build_cage_edges(g.cage);
+  for (auto& e : g.cage.edges) {
+    const int a = e.vertices[0], b = e.vertices[1];
+    const bool along_s = a / n == b / n;  // same row
+    e.interval = along_s ? g.ds[(b % n == (a % n + 1) % n) ? a % n : b % n] : g.dt[(b / n == (a / n + 1) % m) ? a / n : b / n];
+  }
+  return g;
+}
+
+// The cubic B-spline of a periodic polygon with knot intervals d (d[k]
+// between points k and k + 1): point k's function has the knots at points
+// k - 2 .. k + 2.
+struct PeriodicBasis {
+  std::vector<double> d;
+  double knot(int k) const {  // the knot at point k, any integer k
+    const int n = static_cast<int>(d.size());
+    double length = 0.0;
+    for (double x : d) length += x;
+    const int wraps = (k >= 0 ? k / n : -((-k + n - 1) / n));
+    double u = wraps * length;
+    for (int i = 0; i < k - wraps * n; ++i) u += d[i];
+    return u;
+  }
+  // The value of point k's function at u (Cox-de Boor on its five knots).
+  double value(int k, double u) const {
+    double t[5], N[4];
+    for (int a = 0; a < 5; ++a) t[a] = knot(k - 2 + a);
+    for (int a = 0; a < 4; ++a) N[a] = (u >= t[a] && u < t[a + 1]) ? 1.0 : 0.0;
+    for (int p = 1; p <= 3; ++p)
+      for (int a = 0; a < 4 - p; ++a)
+        N[a] = (u - t[a]) / (t[a + p] - t[a]) * N[a] + (t[a + p + 1] - u) / (t[a + p + 1] - t[a + 1]) * N[a + 1];
+    return N[0];
+  }
+  // The points whose functions are non-zero at u in [knot(0), knot(n)).
+  std::vector<std::pair<int, double>> at(double u) const {
+    int a = 0;
+    while (knot(a + 1) <= u) ++a;
+    std::vector<std::pair<int, double>> out;
+    for (int k = a - 1; k <= a + 2; ++k) out.emplace_back(k, value(k, u));
+    return out;
+  }
+};
+
+// The tensor-product surface of a periodic grid's points at (u, v).
+Eigen::RowVector3d surface(const PeriodicBasis& bs, const PeriodicBasis& bt, int n, int m,
+                           const std::function<Eigen::RowVector3d(int, int)>& point, double u, double v) {
+  Eigen::RowVector3d x = Eigen::RowVector3d::Zero();
+  for (const auto& [i, ni] : bs.at(u))
+    for (const auto& [j, nj] : bt.at(v)) x += ni * nj * point(((i % n) + n) % n, ((j % m) + m) % m);
+  return x;
+}
+
+int edge_between(const Cage& c, int a, int b) {
+  for (size_t e = 0; e < c.edges.size(); ++e)
+    if ((c.edges[e].vertices[0] == a && c.edges[e].vertices[1] == b) ||
+        (c.edges[e].vertices[0] == b && c.edges[e].vertices[1] == a))
+      return static_cast<int>(e);
+  return -1;
+}
+
+// The refined grid's vertex (I, J) of 2n x 2m: vertex, edge and face points
+// as refine_cage numbers them.
+int refined_vertex(const PeriodicGrid& g, int I, int J) {
+  const int nf = static_cast<int>(g.cage.faces.size()), ne = static_cast<int>(g.cage.edges.size());
+  I = ((I % (2 * g.n)) + 2 * g.n) % (2 * g.n);
+  J = ((J % (2 * g.m)) + 2 * g.m) % (2 * g.m);
+  const int i = I / 2, j = J / 2;
+  if (I % 2 == 0 && J % 2 == 0) return nf + ne + g.vertex(i, j);
+  if (I % 2 == 1 && J % 2 == 1) return i + g.n * j;  // face (i, j)
+  const int other = I % 2 == 1 ? g.vertex(i + 1, j) : g.vertex(i, j + 1);
+  return nf + edge_between(g.cage, g.vertex(i, j), other);
+}
+
+TEST(Nurcc, RefinedPeriodicGridIsKnotInsertionAtTheMiddles) {
+  std::mt19937 rng(3);
+  const PeriodicGrid g = periodic_grid(7, 6, rng);
+  const Cage r = refine_cage(g.cage);
+  EXPECT_TRUE(opposite_edge_violations(r).empty());
+  PeriodicBasis bs{g.ds}, bt{g.dt}, rs, rt;
+  for (double d : g.ds) rs.d.insert(rs.d.end(), {d / 2, d / 2});
+  for (double d : g.dt) rt.d.insert(rt.d.end(), {d / 2, d / 2});
+  // The child edges carry the halved intervals.
+  for (int J = 0; J < 2 * g.m; ++J)
+    for (int I = 0; I < 2 * g.n; ++I) {
+      const int a = refined_vertex(g, I, J);
+      EXPECT_NEAR(r.edges[edge_between(r, a, refined_vertex(g, I + 1, J))].interval, rs.d[I], 1e-15);
+      EXPECT_NEAR(r.edges[edge_between(r, a, refined_vertex(g, I, J + 1))].interval, rt.d[J], 1e-15);
+    }
+  auto parent = [&](int i, int j) { return Eigen::RowVector3d(g.cage.points.row(g.vertex(i, j))); };
+  auto child = [&](int I, int J) { return Eigen::RowVector3d(r.points.row(refined_vertex(g, I, J))); };
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double worst = 0.0, size = 0.0;
+  for (int k = 0; k < 300; ++k) {
+    const double u = unit(rng) * bs.knot(g.n), v = unit(rng) * bt.knot(g.m);
+    const Eigen::RowVector3d x = surface(bs, bt, g.n, g.m, parent, u, v);
+    worst = std::max(worst, (x - surface(rs, rt, 2 * g.n, 2 * g.m, child, u, v)).norm());
+    size = std::max(size, x.norm());
+  }
+  EXPECT_GT(size, 1.0);
+  EXPECT_LT(worst, 1e-12 * size) << worst;
+}
+
+}  // namespace
+
+namespace {
+
+// Row 2's s-edges made a crease: a closed crease loop whose vertices each
+// have two crease edges. Its polygon refines as its own cubic B-spline curve.
+TEST(Nurcc, CreaseLoopRefinesAsItsCurve) {
+  std::mt19937 rng(8);
+  PeriodicGrid g = periodic_grid(8, 5, rng);
+  const int row = 2;
+  for (auto& e : g.cage.edges)
+    if (e.vertices[0] / g.n == row && e.vertices[1] / g.n == row) e.sharpness = kInfiniteSharpness;
+  const Cage r = refine_cage(g.cage);
+  EXPECT_TRUE(opposite_edge_violations(r).empty());
+  PeriodicBasis bs{g.ds}, rs;
+  for (double d : g.ds) rs.d.insert(rs.d.end(), {d / 2, d / 2});
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double worst = 0.0;
+  for (int k = 0; k < 200; ++k) {
+    const double u = unit(rng) * bs.knot(g.n);
+    Eigen::RowVector3d x = Eigen::RowVector3d::Zero(), y = Eigen::RowVector3d::Zero();
+    for (const auto& [i, w] : bs.at(u)) x += w * g.cage.points.row(g.vertex(i, row));
+    for (const auto& [I, w] : rs.at(u)) y += w * r.points.row(refined_vertex(g, I, 2 * row));
+    worst = std::max(worst, (x - y).norm());
+  }
+  EXPECT_LT(worst, 1e-12) << worst;
+  // The crease stays a crease: its halves, and nothing else.
+  int creases = 0;
+  for (const auto& e : r.edges) creases += e.sharpness > 0.0;
+  EXPECT_EQ(creases, 2 * g.n);
+}
+
+// A box's cage with a different interval per axis (opposite edges of every
+// face equal): eight extraordinary vertices of valence 3. Two steps keep
+// the opposite-edge rule, every child point is an affine combination (a
+// translated cage refines to the translated refinement), and the intervals
+// halve per axis.
+TEST(Nurcc, ExtraordinaryVerticesKeepTheOppositeEdgeRule) {
+  CageOptions smooth;
+  smooth.crease_angle = 180.0;
+  Cage box = surface_cage(tnurcc_test::boxes(1, 2), 0, smooth);
+  const Eigen::RowVector3d span = box.points.colwise().maxCoeff() - box.points.colwise().minCoeff();
+  auto axis_interval = [&](const CageEdge& e) {
+    const Eigen::RowVector3d d = (box.points.row(e.vertices[1]) - box.points.row(e.vertices[0])).cwiseAbs();
+    int axis = 0;
+    d.maxCoeff(&axis);
+    return std::array<double, 3>{{1.0, 0.6, 1.7}}[axis];
+  };
+  for (auto& e : box.edges) e.interval = axis_interval(e);
+  ASSERT_TRUE(opposite_edge_violations(box).empty());
+  ASSERT_GT(span.minCoeff(), 0.0);
+  const Cage once = refine_cage(box), twice = refine_cage(once);
+  EXPECT_TRUE(opposite_edge_violations(once).empty());
+  EXPECT_TRUE(opposite_edge_violations(twice).empty());
+  Cage moved = box;
+  moved.points.rowwise() += Eigen::RowVector3d(3.0, -2.0, 0.5);
+  const Cage r = refine_cage(moved);
+  EXPECT_LT((r.points.rowwise() - Eigen::RowVector3d(3.0, -2.0, 0.5) - once.points).cwiseAbs().maxCoeff(), 1e-12);
+  std::map<double, int> intervals;
+  for (const auto& e : twice.edges) ++intervals[e.interval];
+  EXPECT_EQ(intervals.size(), 3u);
+  EXPECT_DOUBLE_EQ(intervals.begin()->first, 0.6 / 4);
+  EXPECT_DOUBLE_EQ(intervals.rbegin()->first, 1.7 / 4);
+}
+
+}  // namespace

@@ -1,6 +1,8 @@
 #include "igaprep/spline/tnurcc_refine.h"
 
+#include <Eigen/QR>
 #include <algorithm>
+#include <map>
 
 #include "igaprep/core/error.h"
 
@@ -179,57 +181,153 @@ class NurccRules {
     return ((n - 3.0) * p + 2.0 * m_sum / m_weight + f_sum / f_weight) / double(n);
   }
 
+ const Spokes& spokes_of(int v) const { return spokes_[v]; }
+  const VertexStar& star_of(int v) const { return star_[v]; }
+
  private:
   const Cage& c_;
   std::vector<VertexStar> star_;
   std::vector<Spokes> spokes_;
 };
 
-// Every edge smooth or infinitely sharp: what the rules here cover.
-void require_smooth_or_infinitely_sharp(const Cage& cage) {
+// What the rules here cover: opposite edges of each face equal, every edge
+// smooth or infinitely sharp.
+void require_nurcc(const Cage& cage) {
+  if (!opposite_edge_violations(cage).empty())
+    throw bad_input("T-NURCC refinement: opposite edges of a face carry different knot intervals");
   for (const auto& e : cage.edges)
     if (e.sharpness > 0.0 && e.sharpness < kInfiniteSharpness)
       throw bad_input("T-NURCC refinement: edge (" + std::to_string(e.vertices[0]) + ", " +
                       std::to_string(e.vertices[1]) + ") is semi-sharp; only smooth and infinitely sharp edges are");
 }
 
-// Catmull-Clark's masks need equal intervals.
-void require_uniform_rules(const Cage& cage) {
-  if (!uniform_intervals(cage, 1e-12))
-    throw bad_input("T-NURCC limit positions: the cage's knot intervals differ; the masks are Catmull-Clark's");
-  require_smooth_or_infinitely_sharp(cage);
+// The cubic B-spline's value at the knot between intervals a (before the
+// point) and b (after it), pa beyond the point before and rb beyond the
+// point after: the weights of (point before, the point, point after), by
+// blossoms (f(u, u, u) from the two points' neighbours).
+std::array<double, 3> limit_mask(double pa, double a, double b, double rb) {
+  const double before = (b / (a + b)) * (b / (pa + a + b)), after = (a / (a + b)) * (a / (a + b + rb));
+  return {{before, 1.0 - before - after, after}};
+}
+
+// A valence-4 smooth vertex: the tensor product of the masks along its two
+// lines of spokes (0, 2) and (1, 3); face i's far corner takes the product
+// of spoke i's and spoke i + 1's end weights.
+Eigen::RowVector3d regular_limit(const Cage& c, const NurccRules& rules, int v) {
+  const Spokes& s = rules.spokes_of(v);
+  std::array<int, 4> end{};
+  std::array<double, 4> h{}, beyond{};
+  for (int i = 0; i < 4; ++i) {
+    end[i] = other_end(c.edges[s.edges[i]], v);
+    h[i] = c.edges[s.edges[i]].interval;
+    beyond[i] = rules.continuation(s.edges[i], end[i]);
+  }
+  const auto ms = limit_mask(beyond[2], h[2], h[0], beyond[0]), mt = limit_mask(beyond[3], h[3], h[1], beyond[1]);
+  const std::array<double, 4> w{{ms[2], mt[2], ms[0], mt[0]}};  // each spoke's end weight
+  Eigen::RowVector3d x = ms[1] * mt[1] * c.points.row(v);
+  for (int i = 0; i < 4; ++i) {
+    const double across = i % 2 == 0 ? mt[1] : ms[1];
+    x += w[i] * across * c.points.row(end[i]);
+    const auto& f = c.faces[s.faces[i]];
+    int k = 0;
+    while (f[k] != v) ++k;
+    x += w[i] * w[(i + 1) % 4] * c.points.row(f[(k + 2) % 4]);
+  }
+  return x;
+}
+
+// A crease vertex: the mask along its two crease edges.
+Eigen::RowVector3d crease_limit(const Cage& c, const NurccRules& rules, int v) {
+  std::vector<int> creases;
+  for (int e : rules.star_of(v).edges)
+    if (sharp(c.edges[e])) creases.push_back(e);
+  const int a = other_end(c.edges[creases[0]], v), b = other_end(c.edges[creases[1]], v);
+  const auto m = limit_mask(rules.continuation(creases[0], a), c.edges[creases[0]].interval,
+                            c.edges[creases[1]].interval, rules.continuation(creases[1], b));
+  return m[0] * c.points.row(a) + m[1] * c.points.row(v) + m[2] * c.points.row(b);
+}
+
+// The faces of `c` touching `ring`, as a cage of their own with the same
+// intervals and sharpness; `local` receives each vertex's index in it.
+Cage faces_around(const Cage& c, const NurccRules& rules, const std::vector<int>& ring, std::vector<int>& faces,
+                  std::map<int, int>& local) {
+  for (int x : ring) faces.insert(faces.end(), rules.star_of(x).faces.begin(), rules.star_of(x).faces.end());
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  Cage sub;
+  for (int f : faces) {
+    std::array<int, 4> q{};
+    for (int k = 0; k < 4; ++k) q[k] = local.emplace(c.faces[f][k], static_cast<int>(local.size())).first->second;
+    sub.faces.push_back(q);
+  }
+  sub.points = Eigen::MatrixXd::Zero(static_cast<int>(local.size()), 3);
+  build_cage_edges(sub);
+  std::map<std::pair<int, int>, int> parent_edge;
+  for (int f : faces)
+    for (int k = 0; k < 4; ++k) parent_edge[std::minmax(c.faces[f][k], c.faces[f][(k + 1) % 4])] = c.face_edges[f][k];
+  std::vector<int> global(local.size());
+  for (const auto& [g, l] : local) global[l] = g;
+  for (auto& e : sub.edges) {
+    const CageEdge& from = c.edges[parent_edge.at(std::minmax(global[e.vertices[0]], global[e.vertices[1]]))];
+    e.interval = from.interval;
+    e.sharpness = from.sharpness;
+  }
+  return sub;
+}
+
+// A smooth extraordinary vertex v1 of a cage refined at least once, where
+// the refinement of its ring (v1, its spokes' ends, its faces' far corners)
+// is stationary (every interval near it half of a parent spoke's or face's):
+// the limit is the ring weighted by the left eigenvector of that ring's
+// refinement matrix S for the eigenvalue 1. S's columns come from refining
+// the faces around the ring with one ring point at 1 and the others at 0.
+Eigen::RowVector3d extraordinary_limit(const Cage& c1, const NurccRules& rules, int v1) {
+  const Spokes& s = rules.spokes_of(v1);
+  const int n = static_cast<int>(s.edges.size()), m = 2 * n + 1;
+  std::vector<int> ring{v1};
+  for (int i = 0; i < n; ++i) ring.push_back(other_end(c1.edges[s.edges[i]], v1));
+  for (int i = 0; i < n; ++i) {
+    const auto& f = c1.faces[s.faces[i]];
+    int k = 0;
+    while (f[k] != v1) ++k;
+    ring.push_back(f[(k + 2) % 4]);
+  }
+  std::vector<int> faces;
+  std::map<int, int> local;
+  Cage sub = faces_around(c1, rules, ring, faces, local);
+  // The ring's children: v1's vertex point, its spokes' edge points, its faces' face points.
+  const int nf = static_cast<int>(sub.faces.size()), ne = static_cast<int>(sub.edges.size());
+  std::vector<int> child{nf + ne + local.at(v1)};
+  for (int i = 0; i < n; ++i) {
+    const auto key = std::minmax(local.at(v1), local.at(ring[1 + i]));
+    for (int e = 0; e < ne; ++e)
+      if (std::minmax(sub.edges[e].vertices[0], sub.edges[e].vertices[1]) == key) child.push_back(nf + e);
+  }
+  for (int i = 0; i < n; ++i)
+    child.push_back(static_cast<int>(std::lower_bound(faces.begin(), faces.end(), s.faces[i]) - faces.begin()));
+  Eigen::MatrixXd S(m, m);
+  for (int c0 = 0; c0 < m; c0 += 3) {
+    sub.points.setZero();
+    for (int k = 0; k < 3 && c0 + k < m; ++k) sub.points(local.at(ring[c0 + k]), k) = 1.0;
+    const Cage r = refine_cage(sub);
+    for (int k = 0; k < 3 && c0 + k < m; ++k)
+      for (int row = 0; row < m; ++row) S(row, c0 + k) = r.points(child[row], k);
+  }
+  Eigen::MatrixXd A(m + 1, m);
+  A.topRows(m) = S.transpose() - Eigen::MatrixXd::Identity(m, m);
+  A.row(m).setOnes();
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m + 1);
+  rhs[m] = 1.0;
+  const Eigen::VectorXd l = A.colPivHouseholderQr().solve(rhs);
+  Eigen::RowVector3d x = Eigen::RowVector3d::Zero();
+  for (int c = 0; c < m; ++c) x += l[c] * c1.points.row(ring[c]);
+  return x;
 }
 
 }  // namespace
 
-Eigen::MatrixXd limit_positions(const Cage& cage) {
-  require_uniform_rules(cage);
-  const std::vector<VertexStar> star = stars(cage);
-  Eigen::MatrixXd out(cage.points.rows(), 3);
-  for (int v = 0; v < cage.points.rows(); ++v) {
-    const Eigen::RowVector3d p = cage.points.row(v);
-    const CreaseStar c = crease_star(cage, star[v], v);
-    if (c.corner) {
-      out.row(v) = p;
-    } else if (c.ends.size() == 2) {
-      out.row(v) = (cage.points.row(c.ends[0]) + 4.0 * p + cage.points.row(c.ends[1])) / 6.0;
-    } else {
-      const double n = double(star[v].edges.size());
-      Eigen::RowVector3d sum = n * n * p;
-      for (int e : star[v].edges) sum += 4.0 * cage.points.row(other_end(cage.edges[e], v));
-      for (int f : star[v].faces)
-        for (int k = 0; k < 4; ++k)
-          if (cage.faces[f][k] == v) sum += cage.points.row(cage.faces[f][(k + 2) % 4]);
-      out.row(v) = sum / (n * (n + 5.0));
-    }
-  }
-  return out;
-}
-
 Cage refine_cage(const Cage& cage) {
-  require_smooth_or_infinitely_sharp(cage);
-  if (!opposite_edge_violations(cage).empty())
-    throw bad_input("T-NURCC refinement: opposite edges of a face carry different knot intervals");
+  require_nurcc(cage);
   const NurccRules rules(cage);
   const int nf = static_cast<int>(cage.faces.size()), ne = static_cast<int>(cage.edges.size());
   const int nv = static_cast<int>(cage.points.rows());
@@ -261,6 +359,33 @@ Cage refine_cage(const Cage& cage) {
     }
   }
   return child;
+}
+
+Eigen::MatrixXd limit_positions(const Cage& cage) {
+  // From the cage refined once: there every vertex's ring refines alike at
+  // every later step (the intervals beyond its spokes' ends are halves of
+  // its own spokes'), which the masks and the eigenvector assume; in the
+  // cage itself an extraordinary neighbour breaks that for its neighbours.
+  const Cage c1 = refine_cage(cage);
+  const NurccRules rules(c1);
+  const int offset = static_cast<int>(cage.faces.size() + cage.edges.size());
+  Eigen::MatrixXd out(cage.points.rows(), 3);
+  for (int v = 0; v < cage.points.rows(); ++v) {
+    const int v1 = offset + v;
+    const CreaseStar c = crease_star(c1, rules.star_of(v1), v1);
+    if (c.corner) {
+      out.row(v) = cage.points.row(v);
+    } else if (c.ends.size() == 2) {
+      out.row(v) = crease_limit(c1, rules, v1);
+    } else if (!rules.spokes_of(v1).closed) {
+      throw internal_error("T-NURCC limit positions: a smooth vertex on the border");
+    } else if (rules.spokes_of(v1).edges.size() == 4) {
+      out.row(v) = regular_limit(c1, rules, v1);
+    } else {
+      out.row(v) = extraordinary_limit(c1, rules, v1);
+    }
+  }
+  return out;
 }
 
 }  // namespace igaprep::spline

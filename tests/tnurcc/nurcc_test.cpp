@@ -211,3 +211,63 @@ TEST(Nurcc, ExtraordinaryVerticesKeepTheOppositeEdgeRule) {
 }
 
 }  // namespace
+
+namespace {
+
+// limit_positions with unequal intervals: at valence-4 vertices the
+// B-spline surface at the vertex's knots; along a crease loop its curve at
+// the knots.
+TEST(NurccLimit, RegularVerticesAndCreasesAreTheSplinesAtTheKnots) {
+  std::mt19937 rng(21);
+  PeriodicGrid g = periodic_grid(7, 6, rng);
+  const int row = 3;
+  Cage creased = g.cage;
+  for (auto& e : creased.edges)
+    if (e.vertices[0] / g.n == row && e.vertices[1] / g.n == row) e.sharpness = kInfiniteSharpness;
+  const Eigen::MatrixXd smooth = limit_positions(g.cage), crease = limit_positions(creased);
+  PeriodicBasis bs{g.ds}, bt{g.dt};
+  auto parent = [&](int i, int j) { return Eigen::RowVector3d(g.cage.points.row(g.vertex(i, j))); };
+  double worst = 0.0, worst_crease = 0.0;
+  for (int j = 0; j < g.m; ++j)
+    for (int i = 0; i < g.n; ++i)
+      worst = std::max(worst, (smooth.row(g.vertex(i, j)) -
+                               surface(bs, bt, g.n, g.m, parent, bs.knot(i), bt.knot(j))).norm());
+  for (int i = 0; i < g.n; ++i) {
+    Eigen::RowVector3d x = Eigen::RowVector3d::Zero();
+    for (const auto& [k, w] : bs.at(bs.knot(i))) x += w * g.cage.points.row(g.vertex(k, row));
+    worst_crease = std::max(worst_crease, (crease.row(g.vertex(i, row)) - x).norm());
+  }
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_LT(worst_crease, 1e-12);
+}
+
+// At extraordinary vertices (valence 3, a different interval per axis) the
+// limit comes from the ring's stationary refinement: refining the cage
+// first gives the same limit at every vertex's child, to round-off.
+TEST(NurccLimit, LimitPositionsDoNotChangeUnderRefinement) {
+  CageOptions smooth;
+  smooth.crease_angle = 180.0;
+  Cage box = surface_cage(tnurcc_test::boxes(1, 2), 0, smooth);
+  for (auto& e : box.edges) {
+    const Eigen::RowVector3d d = (box.points.row(e.vertices[1]) - box.points.row(e.vertices[0])).cwiseAbs();
+    int axis = 0;
+    d.maxCoeff(&axis);
+    e.interval = std::array<double, 3>{{1.0, 0.6, 1.7}}[axis];
+  }
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> noise(-0.05, 0.05);
+  for (int v = 0; v < box.points.rows(); ++v) box.points.row(v) += Eigen::RowVector3d(noise(rng), noise(rng), noise(rng));
+  ASSERT_TRUE(opposite_edge_violations(box).empty());
+  const Cage once = refine_cage(box);
+  const Eigen::MatrixXd before = limit_positions(box), after = limit_positions(once);
+  const int offset = static_cast<int>(box.faces.size() + box.edges.size());
+  double worst = 0.0, moved = 0.0;
+  for (int v = 0; v < box.points.rows(); ++v) {
+    worst = std::max(worst, (before.row(v) - after.row(offset + v)).norm());
+    moved = std::max(moved, (before.row(v) - box.points.row(v)).norm());
+  }
+  EXPECT_GT(moved, 0.01);  // the limit is not the cage
+  EXPECT_LT(worst, 1e-12) << worst;
+}
+
+}  // namespace

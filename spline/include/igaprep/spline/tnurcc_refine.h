@@ -20,10 +20,14 @@ namespace igaprep::spline {
 // different intervals or a semi-sharp edge.
 Cage refine_cage(const Cage& cage);
 
-// The limit position of every cage vertex by Catmull-Clark's masks: a
-// smooth vertex of valence n (n^2 v + 4 sum of its edge neighbours + sum of
-// its faces' opposite corners) / (n (n + 5)), a crease vertex (a + 4 v + b)
-// / 6, a corner v. Equal intervals only (throws bad_input otherwise).
+// The limit position of every cage vertex, for any intervals that
+// refine_cage takes, read off the cage refined once: at a smooth vertex of
+// valence 4 the tensor product of the cubic B-spline's masks at its knots,
+// at a crease vertex the curve's mask along the crease, at a smooth
+// extraordinary vertex the left eigenvector (eigenvalue 1) of its ring's
+// stationary refinement matrix applied to the ring, a corner stays. With
+// equal intervals these are Catmull-Clark's masks ((n^2 v + 4 sum of edge
+// neighbours + sum of opposite face corners) / (n (n + 5)), (a + 4 v + b) / 6).
 Eigen::MatrixXd limit_positions(const Cage& cage);
 
 }  // namespace igaprep::spline

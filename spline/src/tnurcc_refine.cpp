@@ -72,6 +72,25 @@ Spokes spokes(const Cage& cage, const VertexStar& star, int v) {
   return s;
 }
 
+// A new point as weights of the parent's points (repeats allowed: summed).
+using Stencil = std::vector<std::pair<int, double>>;
+
+void add(Stencil& into, const Stencil& s, double w) {
+  for (const auto& [i, x] : s) into.emplace_back(i, w * x);
+}
+void scale(Stencil& s, double w) {
+  for (auto& entry : s) entry.second *= w;
+}
+
+StencilMatrix stencil_rows(const std::vector<Stencil>& rows, int columns) {
+  std::vector<Eigen::Triplet<double>> t;
+  for (size_t r = 0; r < rows.size(); ++r)
+    for (const auto& [c, w] : rows[r]) t.emplace_back(static_cast<int>(r), c, w);
+  StencilMatrix m(static_cast<int>(rows.size()), columns);
+  m.setFromTriplets(t.begin(), t.end());
+  return m;
+}
+
 // The NURCC rules (Sederberg et al. 2003, section 7, from cubic NURSS with
 // opposite edges of each face equal): each derived from non-uniform cubic
 // B-spline knot insertion at the middle of every interval (blossoms), and
@@ -85,9 +104,9 @@ class NurccRules {
 
   // Cubic B-spline knot insertion in [u_a, u_b] (interval q) of a row with
   // intervals p before a and r after b: the new point between a and b.
-  static Eigen::RowVector3d edge_rule(const Eigen::RowVector3d& a, const Eigen::RowVector3d& b, double p, double q,
-                                      double r) {
-    return ((q + 2.0 * r) * a + (2.0 * p + q) * b) / (2.0 * (p + q + r));
+  static Stencil edge_rule(int a, int b, double p, double q, double r) {
+    const double wa = (q + 2.0 * r) / (2.0 * (p + q + r));
+    return {{a, wa}, {b, 1.0 - wa}};
   }
 
   // The interval of the faces across edge k of face f, in the direction of
@@ -103,14 +122,13 @@ class NurccRules {
   }
 
   // Face f = (v0, v1, v2, v3): s along edge 0 (v0 -> v1), t along edge 3 (v0 -> v3).
-  Eigen::RowVector3d face_point(int f) const {
+  Stencil face_point(int f) const {
     const auto& v = c_.faces[f];
     const double qs = c_.edges[c_.face_edges[f][0]].interval, qt = c_.edges[c_.face_edges[f][3]].interval;
     const double ps = across(f, 3), rs = across(f, 1), pt = across(f, 0), rt = across(f, 2);
     const double s0 = (0.5 * qs + rs) / (ps + qs + rs), s1 = 1.0 - s0;
     const double t0 = (0.5 * qt + rt) / (pt + qt + rt), t1 = 1.0 - t0;
-    return t0 * (s0 * c_.points.row(v[0]) + s1 * c_.points.row(v[1])) +
-           t1 * (s0 * c_.points.row(v[3]) + s1 * c_.points.row(v[2]));
+    return {{v[0], t0 * s0}, {v[1], t0 * s1}, {v[3], t1 * s0}, {v[2], t1 * s1}};
   }
 
   // The interval that continues edge e beyond vertex v: along a crease the
@@ -132,10 +150,10 @@ class NurccRules {
   }
 
   // The 1-D knot insertion along edge e's own row (M in the paper).
-  Eigen::RowVector3d row_point(int e) const {
+  Stencil row_point(int e) const {
     const CageEdge& edge = c_.edges[e];
     const int a = edge.vertices[0], b = edge.vertices[1];
-    return edge_rule(c_.points.row(a), c_.points.row(b), continuation(e, a), edge.interval, continuation(e, b));
+    return edge_rule(a, b, continuation(e, a), edge.interval, continuation(e, b));
   }
 
   // The interval of face f across edge e (its edges at e's ends).
@@ -145,40 +163,49 @@ class NurccRules {
     return c_.edges[c_.face_edges[f][(k + 1) % 4]].interval;
   }
 
-  Eigen::RowVector3d edge_point(int e, const Eigen::MatrixXd& face_points) const {
+  Stencil edge_point(int e, const std::vector<Stencil>& face_points) const {
     const CageEdge& edge = c_.edges[e];
-    const Eigen::RowVector3d m = row_point(e);
-    if (sharp(edge)) return m;
+    Stencil out = row_point(e);
+    if (sharp(edge)) return out;
+    scale(out, 0.5);
     const int f1 = edge.faces[0], f2 = edge.faces[1];
     const double w1 = width(f1, e), w2 = width(f2, e);
-    return 0.5 * m + 0.5 * (w2 * face_points.row(f1) + w1 * face_points.row(f2)) / (w1 + w2);
+    add(out, face_points[f1], 0.5 * w2 / (w1 + w2));
+    add(out, face_points[f2], 0.5 * w1 / (w1 + w2));
+    return out;
   }
 
-  Eigen::RowVector3d vertex_point(int v, const Eigen::MatrixXd& edge_points, const Eigen::MatrixXd& face_points) const {
-    const Eigen::RowVector3d p = c_.points.row(v);
+  Stencil vertex_point(int v, const std::vector<Stencil>& edge_points, const std::vector<Stencil>& face_points) const {
     const CreaseStar cs = crease_star(c_, star_[v], v);
-    if (cs.corner) return p;
+    if (cs.corner) return {{v, 1.0}};
+    Stencil out{{v, 0.5}};
     if (cs.ends.size() == 2) {
       std::vector<int> creases;
       for (int x : star_[v].edges)
         if (sharp(c_.edges[x])) creases.push_back(x);
       const double da = c_.edges[creases[0]].interval, db = c_.edges[creases[1]].interval;
-      return 0.5 * p + (db * edge_points.row(creases[0]) + da * edge_points.row(creases[1])) / (2.0 * (da + db));
+      add(out, edge_points[creases[0]], db / (2.0 * (da + db)));
+      add(out, edge_points[creases[1]], da / (2.0 * (da + db)));
+      return out;
     }
     const Spokes& s = spokes_[v];
     const int n = static_cast<int>(s.edges.size());
     if (!s.closed) throw internal_error("T-NURCC refinement: a smooth vertex on the border");
     auto h = [&](int i) { return c_.edges[s.edges[((i % n) + n) % n]].interval; };
-    Eigen::RowVector3d m_sum = Eigen::RowVector3d::Zero(), f_sum = Eigen::RowVector3d::Zero();
+    std::vector<double> m(n), f(n);
     double m_weight = 0.0, f_weight = 0.0;
     for (int i = 0; i < n; ++i) {
-      const double m = 0.5 * (h(i - 1) + h(i + 1)) * (h(i - 2) + h(i + 2)), f = h(i - 1) * h(i + 2);
-      m_sum += m * row_point(s.edges[i]);
-      m_weight += m;
-      f_sum += f * face_points.row(s.faces[i]);
-      f_weight += f;
+      m[i] = 0.5 * (h(i - 1) + h(i + 1)) * (h(i - 2) + h(i + 2));
+      f[i] = h(i - 1) * h(i + 2);
+      m_weight += m[i];
+      f_weight += f[i];
     }
-    return ((n - 3.0) * p + 2.0 * m_sum / m_weight + f_sum / f_weight) / double(n);
+    out = {{v, (n - 3.0) / n}};
+    for (int i = 0; i < n; ++i) {
+      add(out, row_point(s.edges[i]), 2.0 * m[i] / (m_weight * n));
+      add(out, face_points[s.faces[i]], f[i] / (f_weight * n));
+    }
+    return out;
   }
 
  const Spokes& spokes_of(int v) const { return spokes_[v]; }
@@ -213,7 +240,7 @@ std::array<double, 3> limit_mask(double pa, double a, double b, double rb) {
 // A valence-4 smooth vertex: the tensor product of the masks along its two
 // lines of spokes (0, 2) and (1, 3); face i's far corner takes the product
 // of spoke i's and spoke i + 1's end weights.
-Eigen::RowVector3d regular_limit(const Cage& c, const NurccRules& rules, int v) {
+Stencil regular_limit(const Cage& c, const NurccRules& rules, int v) {
   const Spokes& s = rules.spokes_of(v);
   std::array<int, 4> end{};
   std::array<double, 4> h{}, beyond{};
@@ -224,27 +251,27 @@ Eigen::RowVector3d regular_limit(const Cage& c, const NurccRules& rules, int v) 
   }
   const auto ms = limit_mask(beyond[2], h[2], h[0], beyond[0]), mt = limit_mask(beyond[3], h[3], h[1], beyond[1]);
   const std::array<double, 4> w{{ms[2], mt[2], ms[0], mt[0]}};  // each spoke's end weight
-  Eigen::RowVector3d x = ms[1] * mt[1] * c.points.row(v);
+  Stencil out{{v, ms[1] * mt[1]}};
   for (int i = 0; i < 4; ++i) {
     const double across = i % 2 == 0 ? mt[1] : ms[1];
-    x += w[i] * across * c.points.row(end[i]);
+    out.emplace_back(end[i], w[i] * across);
     const auto& f = c.faces[s.faces[i]];
     int k = 0;
     while (f[k] != v) ++k;
-    x += w[i] * w[(i + 1) % 4] * c.points.row(f[(k + 2) % 4]);
+    out.emplace_back(f[(k + 2) % 4], w[i] * w[(i + 1) % 4]);
   }
-  return x;
+  return out;
 }
 
 // A crease vertex: the mask along its two crease edges.
-Eigen::RowVector3d crease_limit(const Cage& c, const NurccRules& rules, int v) {
+Stencil crease_limit(const Cage& c, const NurccRules& rules, int v) {
   std::vector<int> creases;
   for (int e : rules.star_of(v).edges)
     if (sharp(c.edges[e])) creases.push_back(e);
   const int a = other_end(c.edges[creases[0]], v), b = other_end(c.edges[creases[1]], v);
   const auto m = limit_mask(rules.continuation(creases[0], a), c.edges[creases[0]].interval,
                             c.edges[creases[1]].interval, rules.continuation(creases[1], b));
-  return m[0] * c.points.row(a) + m[1] * c.points.row(v) + m[2] * c.points.row(b);
+  return {{a, m[0]}, {v, m[1]}, {b, m[2]}};
 }
 
 // The faces of `c` touching `ring`, as a cage of their own with the same
@@ -279,9 +306,9 @@ Cage faces_around(const Cage& c, const NurccRules& rules, const std::vector<int>
 // the refinement of its ring (v1, its spokes' ends, its faces' far corners)
 // is stationary (every interval near it half of a parent spoke's or face's):
 // the limit is the ring weighted by the left eigenvector of that ring's
-// refinement matrix S for the eigenvalue 1. S's columns come from refining
-// the faces around the ring with one ring point at 1 and the others at 0.
-Eigen::RowVector3d extraordinary_limit(const Cage& c1, const NurccRules& rules, int v1) {
+// refinement matrix S for the eigenvalue 1, S read off the refinement
+// weights of the faces around the ring.
+Stencil extraordinary_limit(const Cage& c1, const NurccRules& rules, int v1) {
   const Spokes& s = rules.spokes_of(v1);
   const int n = static_cast<int>(s.edges.size()), m = 2 * n + 1;
   std::vector<int> ring{v1};
@@ -305,39 +332,37 @@ Eigen::RowVector3d extraordinary_limit(const Cage& c1, const NurccRules& rules, 
   }
   for (int i = 0; i < n; ++i)
     child.push_back(static_cast<int>(std::lower_bound(faces.begin(), faces.end(), s.faces[i]) - faces.begin()));
+  const StencilMatrix W = refinement(sub).weights;
   Eigen::MatrixXd S(m, m);
-  for (int c0 = 0; c0 < m; c0 += 3) {
-    sub.points.setZero();
-    for (int k = 0; k < 3 && c0 + k < m; ++k) sub.points(local.at(ring[c0 + k]), k) = 1.0;
-    const Cage r = refine_cage(sub);
-    for (int k = 0; k < 3 && c0 + k < m; ++k)
-      for (int row = 0; row < m; ++row) S(row, c0 + k) = r.points(child[row], k);
-  }
+  for (int row = 0; row < m; ++row)
+    for (int col = 0; col < m; ++col) S(row, col) = W.coeff(child[row], local.at(ring[col]));
   Eigen::MatrixXd A(m + 1, m);
   A.topRows(m) = S.transpose() - Eigen::MatrixXd::Identity(m, m);
   A.row(m).setOnes();
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m + 1);
   rhs[m] = 1.0;
   const Eigen::VectorXd l = A.colPivHouseholderQr().solve(rhs);
-  Eigen::RowVector3d x = Eigen::RowVector3d::Zero();
-  for (int c = 0; c < m; ++c) x += l[c] * c1.points.row(ring[c]);
-  return x;
-}
+  Stencil out;
+  for (int c = 0; c < m; ++c) out.emplace_back(ring[c], l[c]);
+  return out;}
 
 }  // namespace
 
-Cage refine_cage(const Cage& cage) {
+CageRefinement refinement(const Cage& cage) {
   require_nurcc(cage);
   const NurccRules rules(cage);
   const int nf = static_cast<int>(cage.faces.size()), ne = static_cast<int>(cage.edges.size());
   const int nv = static_cast<int>(cage.points.rows());
-  Cage child;
-  child.points.resize(nf + ne + nv, 3);
-  for (int f = 0; f < nf; ++f) child.points.row(f) = rules.face_point(f);
-  const Eigen::MatrixXd face_points = child.points.topRows(nf);
-  for (int e = 0; e < ne; ++e) child.points.row(nf + e) = rules.edge_point(e, face_points);
-  const Eigen::MatrixXd edge_points = child.points.middleRows(nf, ne);
-  for (int v = 0; v < nv; ++v) child.points.row(nf + ne + v) = rules.vertex_point(v, edge_points, face_points);
+  std::vector<Stencil> rows(static_cast<size_t>(nf + ne + nv));
+  for (int f = 0; f < nf; ++f) rows[f] = rules.face_point(f);
+  const std::vector<Stencil> face_points(rows.begin(), rows.begin() + nf);
+  for (int e = 0; e < ne; ++e) rows[nf + e] = rules.edge_point(e, face_points);
+  const std::vector<Stencil> edge_points(rows.begin() + nf, rows.begin() + nf + ne);
+  for (int v = 0; v < nv; ++v) rows[nf + ne + v] = rules.vertex_point(v, edge_points, face_points);
+  CageRefinement r;
+  r.weights = stencil_rows(rows, nv);
+  Cage& child = r.child;
+  child.points = r.weights * cage.points;
   for (int f = 0; f < nf; ++f)
     for (int k = 0; k < 4; ++k)
       child.faces.push_back({{nf + ne + cage.faces[f][k], nf + cage.face_edges[f][k], f,
@@ -358,34 +383,38 @@ Cage refine_cage(const Cage& cage) {
       e.interval = rules.width(other, parent) / 2.0;
     }
   }
-  return child;
+  return r;
 }
 
-Eigen::MatrixXd limit_positions(const Cage& cage) {
+Cage refine_cage(const Cage& cage) { return refinement(cage).child; }
+
+StencilMatrix limit_position_weights(const Cage& cage) {
   // From the cage refined once: there every vertex's ring refines alike at
   // every later step (the intervals beyond its spokes' ends are halves of
   // its own spokes'), which the masks and the eigenvector assume; in the
   // cage itself an extraordinary neighbour breaks that for its neighbours.
-  const Cage c1 = refine_cage(cage);
+  const CageRefinement once = refinement(cage);
+  const Cage& c1 = once.child;
   const NurccRules rules(c1);
   const int offset = static_cast<int>(cage.faces.size() + cage.edges.size());
-  Eigen::MatrixXd out(cage.points.rows(), 3);
+  std::vector<Stencil> rows(static_cast<size_t>(cage.points.rows()));
   for (int v = 0; v < cage.points.rows(); ++v) {
     const int v1 = offset + v;
     const CreaseStar c = crease_star(c1, rules.star_of(v1), v1);
-    if (c.corner) {
-      out.row(v) = cage.points.row(v);
-    } else if (c.ends.size() == 2) {
-      out.row(v) = crease_limit(c1, rules, v1);
-    } else if (!rules.spokes_of(v1).closed) {
+    if (c.corner)
+      rows[v] = {{v1, 1.0}};
+    else if (c.ends.size() == 2)
+      rows[v] = crease_limit(c1, rules, v1);
+    else if (!rules.spokes_of(v1).closed)
       throw internal_error("T-NURCC limit positions: a smooth vertex on the border");
-    } else if (rules.spokes_of(v1).edges.size() == 4) {
-      out.row(v) = regular_limit(c1, rules, v1);
-    } else {
-      out.row(v) = extraordinary_limit(c1, rules, v1);
-    }
+    else if (rules.spokes_of(v1).edges.size() == 4)
+      rows[v] = regular_limit(c1, rules, v1);
+    else
+      rows[v] = extraordinary_limit(c1, rules, v1);
   }
-  return out;
+  return StencilMatrix(stencil_rows(rows, static_cast<int>(c1.points.rows())) * once.weights);
 }
+
+Eigen::MatrixXd limit_positions(const Cage& cage) { return limit_position_weights(cage) * cage.points; }
 
 }  // namespace igaprep::spline

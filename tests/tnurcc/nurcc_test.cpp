@@ -271,3 +271,27 @@ TEST(NurccLimit, LimitPositionsDoNotChangeUnderRefinement) {
 }
 
 }  // namespace
+
+namespace {
+
+// The weights behind refine_cage and limit_positions: each row an affine
+// combination (rows sum to 1), local (a limit row at a valence-3 vertex
+// reaches its ring's refinement only), and the points they give.
+TEST(NurccLimit, WeightsAreAffineAndLocal) {
+  std::mt19937 rng(9);
+  PeriodicGrid g = periodic_grid(6, 6, rng);
+  CageOptions smooth;
+  smooth.crease_angle = 180.0;
+  for (const Cage& c : {g.cage, surface_cage(tnurcc_test::boxes(1, 2), 0, smooth)}) {
+    const CageRefinement r = refinement(c);
+    const StencilMatrix L = limit_position_weights(c);
+    EXPECT_LT((r.child.points - r.weights * c.points).cwiseAbs().maxCoeff(), 1e-15);
+    EXPECT_LT((limit_positions(c) - L * c.points).cwiseAbs().maxCoeff(), 1e-15);
+    const Eigen::VectorXd ones = Eigen::VectorXd::Ones(c.points.rows());
+    EXPECT_LT((r.weights * ones - Eigen::VectorXd::Ones(r.weights.rows())).cwiseAbs().maxCoeff(), 1e-14);
+    EXPECT_LT((L * ones - Eigen::VectorXd::Ones(L.rows())).cwiseAbs().maxCoeff(), 1e-12);
+    for (int v = 0; v < L.outerSize(); ++v) EXPECT_LE(L.row(v).nonZeros(), 2 * 13 + 1) << v;
+  }
+}
+
+}  // namespace

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "igaprep/spline/tnurcc_cage.h"
+#include "igaprep/spline/tnurcc_limit.h"
 
 namespace igaprep::spline {
 
@@ -20,6 +21,14 @@ namespace igaprep::spline {
 // different intervals or a semi-sharp edge.
 Cage refine_cage(const Cage& cage);
 
+// The same step with its weights: child.points == weights * cage.points
+// (a row per child vertex, a column per cage vertex, each row summing to 1).
+struct CageRefinement {
+  Cage child;
+  StencilMatrix weights;
+};
+CageRefinement refinement(const Cage& cage);
+
 // The limit position of every cage vertex, for any intervals that
 // refine_cage takes, read off the cage refined once: at a smooth vertex of
 // valence 4 the tensor product of the cubic B-spline's masks at its knots,
@@ -29,5 +38,9 @@ Cage refine_cage(const Cage& cage);
 // equal intervals these are Catmull-Clark's masks ((n^2 v + 4 sum of edge
 // neighbours + sum of opposite face corners) / (n (n + 5)), (a + 4 v + b) / 6).
 Eigen::MatrixXd limit_positions(const Cage& cage);
+
+// The weights behind limit_positions: limit_positions(cage) ==
+// limit_position_weights(cage) * cage.points.
+StencilMatrix limit_position_weights(const Cage& cage);
 
 }  // namespace igaprep::spline

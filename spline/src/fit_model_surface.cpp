@@ -1,7 +1,6 @@
 #include "igaprep/spline/fit_model_surface.h"
 
 #include <Eigen/Geometry>
-#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
@@ -12,66 +11,12 @@
 #include "igaprep/spline/curve_surface.h"
 #include "igaprep/spline/knot_vector.h"
 #include "igaprep/spline/multipatch_topology.h"
+#include "model_points.h"
 
 namespace igaprep::spline {
 namespace {
 
-using Sparse = Eigen::SparseMatrix<double>;
-using Faces = std::vector<std::pair<int, Side>>;
-
-// The faces standing for the surfaces whose label passes `keep`: boundary
-// sides with that label, then interfaces lying on it, each from the side of
-// the material inside the surface (material s lies inside surface s), so
-// that every face's outward normal is the surface's.
-template <class Keep>
-Faces faces_of(const MultiPatch& mp, Keep keep) {
-  Faces out;
-  for (const auto& b : mp.boundaries)
-    if (b.label >= 0 && keep(b.label)) out.emplace_back(b.patch, b.side);
-  for (const auto& itf : mp.interfaces)
-    if (itf.surface >= 0 && keep(itf.surface)) {
-      const bool a_inside = mp.patches.at(static_cast<size_t>(itf.patch_a)).material == itf.surface;
-      out.emplace_back(a_inside ? itf.patch_a : itf.patch_b, a_inside ? itf.side_a : itf.side_b);
-    }
-  return out;
-}
-
-void mark_faces(const MultiPatch& mp, const GlobalNumbering& gn, const Faces& faces, std::vector<char>& mark) {
-  for (const auto& [patch, side] : faces)
-    for (int local : side_control_points(mp.patches.at(static_cast<size_t>(patch)), side))
-      mark[static_cast<size_t>(gn.global[static_cast<size_t>(patch)][static_cast<size_t>(local)])] = 1;
-}
-
-Eigen::MatrixXd global_points(const MultiPatch& mp, const GlobalNumbering& gn) {
-  Eigen::MatrixXd X(gn.count, 3);
-  for (size_t p = 0; p < mp.patches.size(); ++p)
-    for (int i = 0; i < mp.patches[p].control_points.rows(); ++i)
-      X.row(gn.global[p][static_cast<size_t>(i)]) = mp.patches[p].control_points.row(i);
-  return X;
-}
-
-// Writes the global points back into every patch: shared points stay identical.
-void scatter(const Eigen::MatrixXd& X, const GlobalNumbering& gn, MultiPatch& mp) {
-  for (size_t p = 0; p < mp.patches.size(); ++p)
-    for (int i = 0; i < mp.patches[p].control_points.rows(); ++i)
-      mp.patches[p].control_points.row(i) = X.row(gn.global[p][static_cast<size_t>(i)]);
-}
-
-// Global number of every free point's column (-1: held), and back.
-struct Columns {
-  std::vector<int> of_point, point;
-};
-
-Columns free_columns(const std::vector<char>& on_faces, const std::vector<char>& held) {
-  Columns c;
-  c.of_point.assign(on_faces.size(), -1);
-  for (size_t g = 0; g < on_faces.size(); ++g)
-    if (on_faces[g] && !held[g]) {
-      c.of_point[g] = static_cast<int>(c.point.size());
-      c.point.push_back(static_cast<int>(g));
-    }
-  return c;
-}
+using namespace detail;
 
 // The rows of the pairs over all global points: the face's basis (rational
 // where the patch is) at the pair's parameters.
@@ -277,65 +222,6 @@ SurfaceFitResult fit_model_surface(MultiPatch& mp, int surface, const SurfaceFit
   }
   r.max_move = c.point.empty() ? 0.0 : (X - X0).rowwise().norm().maxCoeff();
   return r;
-}
-
-void carry_moves_inside(MultiPatch& mp, const MultiPatch& before, const std::vector<std::pair<int, Side>>& fixed_sides) {
-  const GlobalNumbering gn = global_numbering(mp);
-  std::vector<char> all(static_cast<size_t>(gn.count), 1), held(static_cast<size_t>(gn.count), 0);
-  mark_faces(mp, gn, faces_of(mp, [](int) { return true; }), held);
-  mark_faces(mp, gn, fixed_sides, held);
-  const Columns c = free_columns(all, held);
-  if (c.point.empty()) return;
-  const Eigen::MatrixXd X = global_points(mp, gn), move = X - global_points(before, gn);
-  // The graph Laplacian of the patches' control nets, free rows: deg m_v - sum of neighbours' m.
-  std::vector<std::pair<int, int>> edges;
-  for (size_t p = 0; p < mp.patches.size(); ++p) {
-    const Patch& P = mp.patches[p];
-    const std::array<int, 3> n{{basis_count(P.knots[0], P.degrees[0]), basis_count(P.knots[1], P.degrees[1]),
-                                basis_count(P.knots[2], P.degrees[2])}};
-    const std::array<int, 3> stride{{1, n[0], n[0] * n[1]}};
-    for (int k = 0; k < n[2]; ++k)
-      for (int j = 0; j < n[1]; ++j)
-        for (int i = 0; i < n[0]; ++i) {
-          const std::array<int, 3> at{{i, j, k}};
-          const int l = i + stride[1] * j + stride[2] * k;
-          for (int d = 0; d < 3; ++d)
-            if (at[d] + 1 < n[d])
-              edges.emplace_back(std::minmax(gn.global[p][static_cast<size_t>(l)], gn.global[p][static_cast<size_t>(l + stride[d])]));
-        }
-  }
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  const int n = static_cast<int>(c.point.size());
-  std::vector<Eigen::Triplet<double>> t;
-  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, 3);
-  auto add = [&](int from, int to) {
-    const int row = c.of_point[static_cast<size_t>(from)];
-    if (row < 0) return;
-    t.emplace_back(row, row, 1.0);
-    const int col = c.of_point[static_cast<size_t>(to)];
-    if (col >= 0)
-      t.emplace_back(row, col, -1.0);
-    else
-      rhs.row(row) += move.row(to);
-  };
-  for (const auto& [a, b] : edges) {
-    add(a, b);
-    add(b, a);
-  }
-  // A free part with no held point in reach has no move to follow: a tiny
-  // diagonal term keeps it where it is.
-  for (int k = 0; k < n; ++k) t.emplace_back(k, k, 1e-12);
-  Sparse K(n, n);
-  K.setFromTriplets(t.begin(), t.end());
-  Eigen::ConjugateGradient<Sparse, Eigen::Lower | Eigen::Upper> cg(K);
-  cg.setTolerance(1e-10);
-  cg.setMaxIterations(10 * n);
-  const Eigen::MatrixXd m = cg.solve(rhs);
-  if (cg.info() != Eigen::Success) throw internal_error("carry_moves_inside: conjugate gradients did not converge");
-  Eigen::MatrixXd Xn = X;
-  for (int k = 0; k < n; ++k) Xn.row(c.point[static_cast<size_t>(k)]) += m.row(k);
-  scatter(Xn, gn, mp);
 }
 
 }  // namespace igaprep::spline

@@ -1,0 +1,74 @@
+#pragma once
+// Private to spline/: the control points of a model by global number
+// (global_numbering), and the faces standing for its input surfaces; shared
+// by fit_model_surface and carry_moves_inside.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <utility>
+#include <vector>
+
+#include "igaprep/spline/curve_surface.h"
+#include "igaprep/spline/multipatch.h"
+#include "igaprep/spline/multipatch_topology.h"
+#include "igaprep/spline/side.h"
+
+namespace igaprep::spline::detail {
+
+using Sparse = Eigen::SparseMatrix<double>;
+using Faces = std::vector<std::pair<int, Side>>;
+
+// The faces standing for the surfaces whose label passes `keep`: boundary
+// sides with that label, then interfaces lying on it, each from the side of
+// the material inside the surface (material s lies inside surface s), so
+// that every face's outward normal is the surface's.
+template <class Keep>
+inline Faces faces_of(const MultiPatch& mp, Keep keep) {
+  Faces out;
+  for (const auto& b : mp.boundaries)
+    if (b.label >= 0 && keep(b.label)) out.emplace_back(b.patch, b.side);
+  for (const auto& itf : mp.interfaces)
+    if (itf.surface >= 0 && keep(itf.surface)) {
+      const bool a_inside = mp.patches.at(static_cast<size_t>(itf.patch_a)).material == itf.surface;
+      out.emplace_back(a_inside ? itf.patch_a : itf.patch_b, a_inside ? itf.side_a : itf.side_b);
+    }
+  return out;
+}
+
+inline void mark_faces(const MultiPatch& mp, const GlobalNumbering& gn, const Faces& faces, std::vector<char>& mark) {
+  for (const auto& [patch, side] : faces)
+    for (int local : side_control_points(mp.patches.at(static_cast<size_t>(patch)), side))
+      mark[static_cast<size_t>(gn.global[static_cast<size_t>(patch)][static_cast<size_t>(local)])] = 1;
+}
+
+inline Eigen::MatrixXd global_points(const MultiPatch& mp, const GlobalNumbering& gn) {
+  Eigen::MatrixXd X(gn.count, 3);
+  for (size_t p = 0; p < mp.patches.size(); ++p)
+    for (int i = 0; i < mp.patches[p].control_points.rows(); ++i)
+      X.row(gn.global[p][static_cast<size_t>(i)]) = mp.patches[p].control_points.row(i);
+  return X;
+}
+
+// Writes the global points back into every patch: shared points stay identical.
+inline void scatter(const Eigen::MatrixXd& X, const GlobalNumbering& gn, MultiPatch& mp) {
+  for (size_t p = 0; p < mp.patches.size(); ++p)
+    for (int i = 0; i < mp.patches[p].control_points.rows(); ++i)
+      mp.patches[p].control_points.row(i) = X.row(gn.global[p][static_cast<size_t>(i)]);
+}
+
+// Global number of every free point's column (-1: held), and back.
+struct Columns {
+  std::vector<int> of_point, point;
+};
+
+inline Columns free_columns(const std::vector<char>& on_faces, const std::vector<char>& held) {
+  Columns c;
+  c.of_point.assign(on_faces.size(), -1);
+  for (size_t g = 0; g < on_faces.size(); ++g)
+    if (on_faces[g] && !held[g]) {
+      c.of_point[g] = static_cast<int>(c.point.size());
+      c.point.push_back(static_cast<int>(g));
+    }
+  return c;
+}
+
+}  // namespace igaprep::spline::detail

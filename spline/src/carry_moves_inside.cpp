@@ -1,8 +1,9 @@
+#include "igaprep/spline/fit_model_surface.h"
+
 #include <Eigen/IterativeLinearSolvers>
 #include <algorithm>
 
 #include "igaprep/core/error.h"
-#include "igaprep/spline/fit_model_surface.h"
 #include "igaprep/spline/knot_vector.h"
 #include "model_points.h"
 

@@ -2,6 +2,7 @@
 
 #include <Eigen/QR>
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "igaprep/core/error.h"
@@ -416,5 +417,56 @@ StencilMatrix limit_position_weights(const Cage& cage) {
 }
 
 Eigen::MatrixXd limit_positions(const Cage& cage) { return limit_position_weights(cage) * cage.points; }
+
+DyadicLimit dyadic_limit(const Cage& cage, int levels) {
+  if (levels < 0 || levels > 8) throw bad_input("dyadic_limit: levels must lie in [0, 8]");
+  // Each face of the current level: the cage face it lies in and its corners' (s, t) there.
+  std::vector<int> origin(cage.faces.size());
+  std::vector<std::array<Eigen::Vector2d, 4>> corner(cage.faces.size());
+  for (size_t f = 0; f < cage.faces.size(); ++f) {
+    origin[f] = static_cast<int>(f);
+    corner[f] = {{Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0), Eigen::Vector2d(1, 1), Eigen::Vector2d(0, 1)}};
+  }
+  Cage c = cage;
+  StencilMatrix W(cage.points.rows(), cage.points.rows());
+  W.setIdentity();
+  for (int level = 0; level < levels; ++level) {
+    const CageRefinement r = refinement(c);
+    W = StencilMatrix(r.weights * W);
+    std::vector<int> child_origin(4 * c.faces.size());
+    std::vector<std::array<Eigen::Vector2d, 4>> child_corner(4 * c.faces.size());
+    for (size_t f = 0; f < c.faces.size(); ++f) {
+      const auto& q = corner[f];
+      const Eigen::Vector2d centre = 0.25 * (q[0] + q[1] + q[2] + q[3]);
+      for (int k = 0; k < 4; ++k) {  // child 4 f + k: (vertex k, edge k, face, edge k - 1)
+        child_origin[4 * f + k] = origin[f];
+        child_corner[4 * f + k] = {{q[k], 0.5 * (q[k] + q[(k + 1) % 4]), centre, 0.5 * (q[(k + 3) % 4] + q[k])}};
+      }
+    }
+    origin = std::move(child_origin);
+    corner = std::move(child_corner);
+    c = r.child;
+  }
+  const StencilMatrix at_vertices = StencilMatrix(limit_position_weights(c) * W);
+  const int n = 1 << levels, side = n + 1;
+  DyadicLimit out;
+  out.levels = levels;
+  std::vector<int> vertex(cage.faces.size() * static_cast<size_t>(side * side), -1);
+  for (size_t f = 0; f < c.faces.size(); ++f)
+    for (int k = 0; k < 4; ++k) {
+      const int i = static_cast<int>(std::lround(corner[f][k][0] * n)), j = static_cast<int>(std::lround(corner[f][k][1] * n));
+      vertex[static_cast<size_t>(origin[f]) * side * side + i + side * j] = c.faces[f][k];
+    }
+  std::vector<Eigen::Triplet<double>> t;
+  for (size_t g = 0; g < vertex.size(); ++g) {
+    const int f = static_cast<int>(g / (side * side)), ij = static_cast<int>(g % (side * side));
+    out.at.push_back({f, double(ij % side) / n, double(ij / side) / n});
+    for (StencilMatrix::InnerIterator it(at_vertices, vertex[g]); it; ++it)
+      t.emplace_back(static_cast<int>(g), static_cast<int>(it.col()), it.value());
+  }
+  out.weights.resize(static_cast<int>(vertex.size()), cage.points.rows());
+  out.weights.setFromTriplets(t.begin(), t.end());
+  return out;
+}
 
 }  // namespace igaprep::spline

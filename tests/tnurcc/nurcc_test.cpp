@@ -295,3 +295,65 @@ TEST(NurccLimit, WeightsAreAffineAndLocal) {
 }
 
 }  // namespace
+
+namespace {
+
+// Limit points on a dyadic grid per face: OpenSubdiv's with equal
+// intervals, the B-spline surface's on a closed grid with unequal ones, and
+// with extraordinary vertices the same whether the cage is refined first.
+TEST(NurccDyadic, EqualIntervalsGiveOpenSubdivsLimit) {
+  CageOptions smooth;
+  smooth.crease_angle = 180.0;
+  for (const Cage& c : {surface_cage(tnurcc_test::boxes(1, 2), 0, smooth), surface_cage(tnurcc_test::boxes(2, 2), 0)}) {
+    const DyadicLimit d = dyadic_limit(c, 2);
+    ASSERT_EQ(d.at.size(), c.faces.size() * 25);
+    const Eigen::MatrixXd mine = d.weights * c.points, osd = limit_stencils(c, d.at).value * c.points;
+    EXPECT_LT((mine - osd).cwiseAbs().maxCoeff(), 1e-12);
+  }
+}
+
+TEST(NurccDyadic, UnequalIntervalsOnAGridGiveTheBSplineSurface) {
+  std::mt19937 rng(17);
+  const PeriodicGrid g = periodic_grid(6, 5, rng);
+  const DyadicLimit d = dyadic_limit(g.cage, 2);
+  const Eigen::MatrixXd x = d.weights * g.cage.points;
+  PeriodicBasis bs{g.ds}, bt{g.dt};
+  auto parent = [&](int i, int j) { return Eigen::RowVector3d(g.cage.points.row(g.vertex(i, j))); };
+  double worst = 0.0;
+  for (size_t k = 0; k < d.at.size(); ++k) {
+    const int i = d.at[k].face % g.n, j = d.at[k].face / g.n;
+    const double u = bs.knot(i) + d.at[k].s * g.ds[i], v = bt.knot(j) + d.at[k].t * g.dt[j];
+    worst = std::max(worst, (x.row(static_cast<int>(k)) - surface(bs, bt, g.n, g.m, parent, u, v)).norm());
+  }
+  EXPECT_LT(worst, 1e-12) << worst;
+}
+
+TEST(NurccDyadic, ExtraordinaryVerticesAgreeAcrossLevels) {
+  CageOptions smooth;
+  smooth.crease_angle = 180.0;
+  Cage box = surface_cage(tnurcc_test::boxes(1, 2), 0, smooth);
+  for (auto& e : box.edges) {
+    const Eigen::RowVector3d dx = (box.points.row(e.vertices[1]) - box.points.row(e.vertices[0])).cwiseAbs();
+    int axis = 0;
+    dx.maxCoeff(&axis);
+    e.interval = std::array<double, 3>{{1.0, 0.6, 1.7}}[axis];
+  }
+  const DyadicLimit coarse = dyadic_limit(box, 2), fine = dyadic_limit(refine_cage(box), 1);
+  const Eigen::MatrixXd a = coarse.weights * box.points, b = fine.weights * refine_cage(box).points;
+  // Child face 4 f + k covers parent face f's quarter at corner k (refine_cage's numbering).
+  const double s0[4] = {0, 1, 1, 0}, t0[4] = {0, 0, 1, 1};
+  double worst = 0.0;
+  for (size_t r = 0; r < fine.at.size(); ++r) {
+    const LimitLocation& l = fine.at[r];
+    const int f = l.face / 4, k = l.face % 4;
+    // Child (s, t) along (vertex k -> edge k, vertex k -> edge k - 1) in the parent's corners' frame.
+    const Eigen::Vector2d corner(s0[k], t0[k]), along_s = 0.5 * (Eigen::Vector2d(s0[(k + 1) % 4], t0[(k + 1) % 4]) - corner),
+                          along_t = 0.5 * (Eigen::Vector2d(s0[(k + 3) % 4], t0[(k + 3) % 4]) - corner);
+    const Eigen::Vector2d st = corner + l.s * along_s + l.t * along_t;
+    const int i = static_cast<int>(std::lround(st[0] * 4)), j = static_cast<int>(std::lround(st[1] * 4));
+    worst = std::max(worst, (b.row(static_cast<int>(r)) - a.row(f * 25 + i + 5 * j)).norm());
+  }
+  EXPECT_LT(worst, 1e-12) << worst;
+}
+
+}  // namespace

@@ -43,4 +43,17 @@ Eigen::MatrixXd limit_positions(const Cage& cage);
 // limit_position_weights(cage) * cage.points.
 StencilMatrix limit_position_weights(const Cage& cage);
 
+// Limit points of any cage refine_cage takes, on a dyadic grid: each face's
+// (2^levels + 1)^2 locations (s, t) = (i, j) / 2^levels, s fastest (grids of
+// neighbouring faces share their border points), with their weights over
+// the cage points: the refinement's weights `levels` times, then the limit
+// positions' (exact limit points, also for unequal intervals, where
+// OpenSubdiv's limit is not the NURCC's).
+struct DyadicLimit {
+  int levels = 0;
+  std::vector<LimitLocation> at;
+  StencilMatrix weights;  // a row per location
+};
+DyadicLimit dyadic_limit(const Cage& cage, int levels);
+
 }  // namespace igaprep::spline

@@ -116,6 +116,27 @@ int refined_vertex(const PeriodicGrid& g, int I, int J) {
   return nf + edge_between(g.cage, g.vertex(i, j), other);
 }
 
+// A box's cage (one patch, two elements) with one knot interval per axis,
+// so opposite edges of every face agree: eight valence-3 vertices.
+Cage box_with_axis_intervals() {
+  CageOptions smooth;
+  smooth.crease_angle = 180.0;
+  Cage box = surface_cage(tnurcc_test::boxes(1, 2), 0, smooth);
+  for (auto& e : box.edges) {
+    const Eigen::RowVector3d d = (box.points.row(e.vertices[1]) - box.points.row(e.vertices[0])).cwiseAbs();
+    int axis = 0;
+    d.maxCoeff(&axis);
+    e.interval = std::array<double, 3>{{1.0, 0.6, 1.7}}[axis];
+  }
+  return box;
+}
+
+// The s-edges of one row of a periodic grid made a crease loop.
+void crease_row(const PeriodicGrid& g, int row, Cage& cage) {
+  for (auto& e : cage.edges)
+    if (e.vertices[0] / g.n == row && e.vertices[1] / g.n == row) e.sharpness = kInfiniteSharpness;
+}
+
 TEST(Nurcc, RefinedPeriodicGridIsKnotInsertionAtTheMiddles) {
   std::mt19937 rng(3);
   const PeriodicGrid g = periodic_grid(7, 6, rng);
@@ -145,9 +166,6 @@ TEST(Nurcc, RefinedPeriodicGridIsKnotInsertionAtTheMiddles) {
   EXPECT_LT(worst, 1e-12 * size) << worst;
 }
 
-}  // namespace
-
-namespace {
 
 // Row 2's s-edges made a crease: a closed crease loop whose vertices each
 // have two crease edges. Its polygon refines as its own cubic B-spline curve.
@@ -155,8 +173,7 @@ TEST(Nurcc, CreaseLoopRefinesAsItsCurve) {
   std::mt19937 rng(8);
   PeriodicGrid g = periodic_grid(8, 5, rng);
   const int row = 2;
-  for (auto& e : g.cage.edges)
-    if (e.vertices[0] / g.n == row && e.vertices[1] / g.n == row) e.sharpness = kInfiniteSharpness;
+  crease_row(g, row, g.cage);
   const Cage r = refine_cage(g.cage);
   EXPECT_TRUE(opposite_edge_violations(r).empty());
   PeriodicBasis bs{g.ds}, rs;
@@ -183,19 +200,8 @@ TEST(Nurcc, CreaseLoopRefinesAsItsCurve) {
 // translated cage refines to the translated refinement), and the intervals
 // halve per axis.
 TEST(Nurcc, ExtraordinaryVerticesKeepTheOppositeEdgeRule) {
-  CageOptions smooth;
-  smooth.crease_angle = 180.0;
-  Cage box = surface_cage(tnurcc_test::boxes(1, 2), 0, smooth);
-  const Eigen::RowVector3d span = box.points.colwise().maxCoeff() - box.points.colwise().minCoeff();
-  auto axis_interval = [&](const CageEdge& e) {
-    const Eigen::RowVector3d d = (box.points.row(e.vertices[1]) - box.points.row(e.vertices[0])).cwiseAbs();
-    int axis = 0;
-    d.maxCoeff(&axis);
-    return std::array<double, 3>{{1.0, 0.6, 1.7}}[axis];
-  };
-  for (auto& e : box.edges) e.interval = axis_interval(e);
+  const Cage box = box_with_axis_intervals();
   ASSERT_TRUE(opposite_edge_violations(box).empty());
-  ASSERT_GT(span.minCoeff(), 0.0);
   const Cage once = refine_cage(box), twice = refine_cage(once);
   EXPECT_TRUE(opposite_edge_violations(once).empty());
   EXPECT_TRUE(opposite_edge_violations(twice).empty());
@@ -210,9 +216,6 @@ TEST(Nurcc, ExtraordinaryVerticesKeepTheOppositeEdgeRule) {
   EXPECT_DOUBLE_EQ(intervals.rbegin()->first, 1.7 / 4);
 }
 
-}  // namespace
-
-namespace {
 
 // limit_positions with unequal intervals: at valence-4 vertices the
 // B-spline surface at the vertex's knots; along a crease loop its curve at
@@ -222,8 +225,7 @@ TEST(NurccLimit, RegularVerticesAndCreasesAreTheSplinesAtTheKnots) {
   PeriodicGrid g = periodic_grid(7, 6, rng);
   const int row = 3;
   Cage creased = g.cage;
-  for (auto& e : creased.edges)
-    if (e.vertices[0] / g.n == row && e.vertices[1] / g.n == row) e.sharpness = kInfiniteSharpness;
+  crease_row(g, row, creased);
   const Eigen::MatrixXd smooth = limit_positions(g.cage), crease = limit_positions(creased);
   PeriodicBasis bs{g.ds}, bt{g.dt};
   auto parent = [&](int i, int j) { return Eigen::RowVector3d(g.cage.points.row(g.vertex(i, j))); };
@@ -245,15 +247,7 @@ TEST(NurccLimit, RegularVerticesAndCreasesAreTheSplinesAtTheKnots) {
 // limit comes from the ring's stationary refinement: refining the cage
 // first gives the same limit at every vertex's child, to round-off.
 TEST(NurccLimit, LimitPositionsDoNotChangeUnderRefinement) {
-  CageOptions smooth;
-  smooth.crease_angle = 180.0;
-  Cage box = surface_cage(tnurcc_test::boxes(1, 2), 0, smooth);
-  for (auto& e : box.edges) {
-    const Eigen::RowVector3d d = (box.points.row(e.vertices[1]) - box.points.row(e.vertices[0])).cwiseAbs();
-    int axis = 0;
-    d.maxCoeff(&axis);
-    e.interval = std::array<double, 3>{{1.0, 0.6, 1.7}}[axis];
-  }
+  Cage box = box_with_axis_intervals();
   std::mt19937 rng(4);
   std::uniform_real_distribution<double> noise(-0.05, 0.05);
   for (int v = 0; v < box.points.rows(); ++v) box.points.row(v) += Eigen::RowVector3d(noise(rng), noise(rng), noise(rng));
@@ -270,9 +264,6 @@ TEST(NurccLimit, LimitPositionsDoNotChangeUnderRefinement) {
   EXPECT_LT(worst, 1e-12) << worst;
 }
 
-}  // namespace
-
-namespace {
 
 // The weights behind refine_cage and limit_positions: each row an affine
 // combination (rows sum to 1), local (a limit row at a valence-3 vertex
@@ -294,9 +285,6 @@ TEST(NurccLimit, WeightsAreAffineAndLocal) {
   }
 }
 
-}  // namespace
-
-namespace {
 
 // Limit points on a dyadic grid per face: OpenSubdiv's with equal
 // intervals, the B-spline surface's on a closed grid with unequal ones, and
@@ -329,15 +317,7 @@ TEST(NurccDyadic, UnequalIntervalsOnAGridGiveTheBSplineSurface) {
 }
 
 TEST(NurccDyadic, ExtraordinaryVerticesAgreeAcrossLevels) {
-  CageOptions smooth;
-  smooth.crease_angle = 180.0;
-  Cage box = surface_cage(tnurcc_test::boxes(1, 2), 0, smooth);
-  for (auto& e : box.edges) {
-    const Eigen::RowVector3d dx = (box.points.row(e.vertices[1]) - box.points.row(e.vertices[0])).cwiseAbs();
-    int axis = 0;
-    dx.maxCoeff(&axis);
-    e.interval = std::array<double, 3>{{1.0, 0.6, 1.7}}[axis];
-  }
+  const Cage box = box_with_axis_intervals();
   const DyadicLimit coarse = dyadic_limit(box, 2), fine = dyadic_limit(refine_cage(box), 1);
   const Eigen::MatrixXd a = coarse.weights * box.points, b = fine.weights * refine_cage(box).points;
   // Child face 4 f + k covers parent face f's quarter at corner k (refine_cage's numbering).

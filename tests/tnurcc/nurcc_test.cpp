@@ -7,6 +7,7 @@
 // (Equal intervals: refine_test.cpp, against OpenSubdiv.)
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <map>
 #include <random>
 
@@ -334,6 +335,81 @@ TEST(NurccDyadic, ExtraordinaryVerticesAgreeAcrossLevels) {
     worst = std::max(worst, (b.row(static_cast<int>(r)) - a.row(f * 25 + i + 5 * j)).norm());
   }
   EXPECT_LT(worst, 1e-12) << worst;
+}
+
+// Limit normals from limit_tangent_weights: the B-spline surface's on a
+// grid with unequal intervals, OpenSubdiv's (outward) at every smooth vertex
+// of a uniform box (the valence-3 ones included), and the same before and
+// after a refinement around valence-3 vertices with unequal intervals.
+Eigen::MatrixXd vertex_normals(const Cage& c) {
+  const VertexTangentWeights t = limit_tangent_weights(c);
+  const Eigen::MatrixXd a = t.first * c.points, b = t.second * c.points;
+  Eigen::MatrixXd n(c.points.rows(), 3);
+  for (int v = 0; v < n.rows(); ++v) {
+    const Eigen::Vector3d x = Eigen::Vector3d(a.row(v)).cross(Eigen::Vector3d(b.row(v)));
+    n.row(v) = x.norm() > 0.0 ? Eigen::RowVector3d(x.normalized()) : Eigen::RowVector3d::Zero();
+  }
+  return n;
+}
+
+TEST(NurccTangents, GridTangentsAreTheBSplineDerivatives) {
+  std::mt19937 rng(23);
+  const PeriodicGrid g = periodic_grid(6, 5, rng);
+  const VertexTangentWeights t = limit_tangent_weights(g.cage);
+  const Eigen::MatrixXd a = t.first * g.cage.points, b = t.second * g.cage.points;
+  PeriodicBasis bs{g.ds}, bt{g.dt};
+  auto parent = [&](int i, int j) { return Eigen::RowVector3d(g.cage.points.row(g.vertex(i, j))); };
+  const double h = 1e-5;
+  double worst = 0.0;
+  for (int j = 0; j < g.m; ++j)
+    for (int i = 0; i < g.n; ++i) {
+      const double u = bs.knot(i) + (i == 0 ? bs.knot(g.n) : 0.0), v = bt.knot(j) + (j == 0 ? bt.knot(g.m) : 0.0);
+      auto S = [&](double uu, double vv) { return surface(bs, bt, g.n, g.m, parent, uu, vv); };
+      const Eigen::RowVector3d du = (S(u + h, v) - S(u - h, v)) / (2 * h), dv = (S(u, v + h) - S(u, v - h)) / (2 * h);
+      // Spokes 0 and 1 run along +-u and +-v in some order: match each tangent to one derivative.
+      const int k = g.vertex(i, j);
+      for (const Eigen::RowVector3d& x : {Eigen::RowVector3d(a.row(k)), Eigen::RowVector3d(b.row(k))}) {
+        const double e = std::min({(x - du).norm(), (x + du).norm(), (x - dv).norm(), (x + dv).norm()});
+        worst = std::max(worst, e / std::max(du.norm(), dv.norm()));
+      }
+    }
+  EXPECT_LT(worst, 1e-7) << worst;
+}
+
+TEST(NurccTangents, EqualIntervalsGiveOpenSubdivsNormals) {
+  CageOptions smooth;
+  smooth.crease_angle = 180.0;
+  const Cage c = surface_cage(tnurcc_test::boxes(1, 2), 0, smooth);
+  const Eigen::MatrixXd mine = vertex_normals(c);
+  std::vector<LimitLocation> at;
+  for (int v = 0; v < c.points.rows(); ++v)
+    for (size_t f = 0; f < c.faces.size(); ++f)
+      for (int k = 0; k < 4; ++k)
+        if (c.faces[f][k] == v && at.size() == static_cast<size_t>(v)) {
+          const double s[4] = {0, 1, 1, 0}, t[4] = {0, 0, 1, 1};
+          at.push_back({static_cast<int>(f), s[k], t[k]});
+        }
+  const LimitValues osd = limit_values(limit_stencils(c, at), c.points);
+  double worst = 0.0;
+  for (int v = 0; v < c.points.rows(); ++v) worst = std::max(worst, (mine.row(v) - osd.normal.row(v)).norm());
+  EXPECT_LT(worst, 1e-9) << worst;
+}
+
+TEST(NurccTangents, NormalsAtExtraordinaryVerticesDoNotChangeUnderRefinement) {
+  Cage box = box_with_axis_intervals();
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> noise(-0.03, 0.03);
+  for (int v = 0; v < box.points.rows(); ++v) box.points.row(v) += Eigen::RowVector3d(noise(rng), noise(rng), noise(rng));
+  const Cage once = refine_cage(box);
+  const Eigen::MatrixXd before = vertex_normals(box), after = vertex_normals(once);
+  const Eigen::RowVector3d centre = box.points.colwise().mean();
+  const int offset = static_cast<int>(box.faces.size() + box.edges.size());
+  double worst = 0.0;
+  for (int v = 0; v < box.points.rows(); ++v) {
+    worst = std::max(worst, (before.row(v) - after.row(offset + v)).norm());
+    EXPECT_GT(before.row(v).dot(box.points.row(v) - centre), 0.0) << v;  // outward
+  }
+  EXPECT_LT(worst, 1e-9) << worst;
 }
 
 }  // namespace

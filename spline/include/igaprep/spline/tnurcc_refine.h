@@ -43,6 +43,18 @@ Eigen::MatrixXd limit_positions(const Cage& cage);
 // limit_position_weights(cage) * cage.points.
 StencilMatrix limit_position_weights(const Cage& cage);
 
+// Two limit tangents at every smooth cage vertex, as weights over the cage
+// points, first x second pointing out of the surface (faces counter-
+// clockwise seen from outside): at valence 4 the derivatives along spokes
+// 0 and 1 per unit of knot parameter (the B-spline's), at an extraordinary
+// vertex the ring's subdominant left eigenvectors (a basis of the tangent
+// plane, not derivatives). Crease vertices and corners, where the tangent
+// plane is one-sided, get zero rows.
+struct VertexTangentWeights {
+  StencilMatrix first, second;
+};
+VertexTangentWeights limit_tangent_weights(const Cage& cage);
+
 // Limit points of any cage refine_cage takes, on a dyadic grid: each face's
 // (2^levels + 1)^2 locations (s, t) = (i, j) / 2^levels, s fastest (grids of
 // neighbouring faces share their border points), with their weights over

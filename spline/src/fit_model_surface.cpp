@@ -4,12 +4,14 @@
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "igaprep/core/error.h"
 #include "igaprep/spline/basis.h"
 #include "igaprep/spline/evaluate.h"
 #include "igaprep/spline/curve_surface.h"
 #include "igaprep/spline/knot_vector.h"
+#include "igaprep/spline/label_sides.h"
 #include "igaprep/spline/multipatch_topology.h"
 #include "model_points.h"
 
@@ -22,13 +24,17 @@ using namespace detail;
 // where the patch is) at the pair's parameters.
 Sparse pair_rows(const MultiPatch& mp, const GlobalNumbering& gn, const std::vector<SurfaceFitPair>& pairs) {
   std::vector<Eigen::Triplet<double>> t;
+  std::map<std::pair<int, int>, std::vector<int>> side_points;  // each face's control points, found once
   for (size_t r = 0; r < pairs.size(); ++r) {
     const SurfaceFitPair& q = pairs[r];
     if (q.patch < 0 || q.patch >= static_cast<int>(mp.patches.size()))
       throw bad_input("fit_model_surface: a pair names patch " + std::to_string(q.patch) + ", which does not exist");
     const Patch& P = mp.patches[static_cast<size_t>(q.patch)];
     const std::array<int, 2> dirs = q.side.tangent_directions();
-    const std::vector<int> local = side_control_points(P, q.side);
+    auto found = side_points.find({q.patch, q.side.index()});
+    if (found == side_points.end())
+      found = side_points.emplace(std::make_pair(q.patch, q.side.index()), side_control_points(P, q.side)).first;
+    const std::vector<int>& local = found->second;
     const int n0 = basis_count(P.knots[dirs[0]], P.degrees[dirs[0]]);
     std::array<int, 2> span{};
     std::array<Eigen::VectorXd, 2> N;
@@ -181,7 +187,7 @@ SurfaceFitResult fit_model_surface(MultiPatch& mp, int surface, const SurfaceFit
                                    const std::vector<std::pair<int, Side>>& fixed_sides,
                                    const SurfaceFitOptions& options) {
   SurfaceFitResult r;
-  const Faces faces = faces_of(mp, [&](int label) { return label == surface; });
+  const Faces faces = sides_on_surface(mp, surface);
   if (faces.empty()) return r;
   const GlobalNumbering gn = global_numbering(mp);
   std::vector<char> on_faces(static_cast<size_t>(gn.count), 0), held(static_cast<size_t>(gn.count), 0);
@@ -220,7 +226,7 @@ SurfaceFitResult fit_model_surface(MultiPatch& mp, int surface, const SurfaceFit
     ++r.iterations;
     p = pairs(mp);
   }
-  r.max_move = c.point.empty() ? 0.0 : (X - X0).rowwise().norm().maxCoeff();
+  r.max_move = (X - X0).rowwise().norm().maxCoeff();
   return r;
 }
 

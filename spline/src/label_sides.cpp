@@ -57,6 +57,18 @@ std::string label_list(const MultiPatch& mp) {
   return s.empty() ? "none" : s;
 }
 
+std::vector<std::pair<int, Side>> sides_on_surface(const MultiPatch& mp, int label) {
+  std::vector<std::pair<int, Side>> out;
+  for (const auto& b : mp.boundaries)
+    if (b.label == label) out.emplace_back(b.patch, b.side);
+  for (const auto& itf : mp.interfaces)
+    if (itf.surface == label) {
+      const bool a_inside = mp.patches.at(itf.patch_a).material >= mp.patches.at(itf.patch_b).material;
+      out.emplace_back(a_inside ? itf.patch_a : itf.patch_b, a_inside ? itf.side_a : itf.side_b);
+    }
+  return out;
+}
+
 std::vector<int> labels_with_sides(const MultiPatch& mp) {
   std::vector<bool> used(mp.labels.size(), false);
   for (const auto& b : mp.boundaries)

@@ -1,13 +1,14 @@
 #pragma once
 // Private to spline/: the control points of a model by global number
-// (global_numbering), and the faces standing for its input surfaces; shared
-// by fit_model_surface and carry_moves_inside.
+// (global_numbering), and which of them lie on given patch sides; shared by
+// fit_model_surface and carry_moves_inside.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <utility>
 #include <vector>
 
 #include "igaprep/spline/curve_surface.h"
+#include "igaprep/spline/label_sides.h"
 #include "igaprep/spline/multipatch.h"
 #include "igaprep/spline/multipatch_topology.h"
 #include "igaprep/spline/side.h"
@@ -17,19 +18,15 @@ namespace igaprep::spline::detail {
 using Sparse = Eigen::SparseMatrix<double>;
 using Faces = std::vector<std::pair<int, Side>>;
 
-// The faces standing for the surfaces whose label passes `keep`: boundary
-// sides with that label, then interfaces lying on it, each from the side of
-// the material inside the surface (material s lies inside surface s), so
-// that every face's outward normal is the surface's.
+// The faces standing for every surface whose label passes `keep`
+// (sides_on_surface of each label that has sides).
 template <class Keep>
 inline Faces faces_of(const MultiPatch& mp, Keep keep) {
   Faces out;
-  for (const auto& b : mp.boundaries)
-    if (b.label >= 0 && keep(b.label)) out.emplace_back(b.patch, b.side);
-  for (const auto& itf : mp.interfaces)
-    if (itf.surface >= 0 && keep(itf.surface)) {
-      const bool a_inside = mp.patches.at(static_cast<size_t>(itf.patch_a)).material == itf.surface;
-      out.emplace_back(a_inside ? itf.patch_a : itf.patch_b, a_inside ? itf.side_a : itf.side_b);
+  for (int label : labels_with_sides(mp))
+    if (keep(label)) {
+      const Faces f = sides_on_surface(mp, label);
+      out.insert(out.end(), f.begin(), f.end());
     }
   return out;
 }

@@ -10,30 +10,12 @@
 #include "igaprep/core/angle.h"
 #include "igaprep/core/error.h"
 #include "igaprep/spline/curve_surface.h"
+#include "igaprep/spline/label_sides.h"
 #include "igaprep/spline/multipatch_topology.h"
 
 
 namespace igaprep::spline {
 namespace {
-
-struct SideRef {
-  int patch;
-  Side side;
-};
-
-std::vector<SideRef> sides_of_label(const MultiPatch& mp, int label) {
-  std::vector<SideRef> out;
-  for (const auto& b : mp.boundaries)
-    if (b.label == label) out.push_back({b.patch, b.side});
-  // An interface's side from the inner material (the higher index: material
-  // i lies inside surface i), so that "out of the patch" is out of the surface.
-  for (const auto& itf : mp.interfaces)
-    if (itf.surface == label) {
-      const bool a_inside = mp.patches[itf.patch_a].material >= mp.patches[itf.patch_b].material;
-      out.push_back(a_inside ? SideRef{itf.patch_a, itf.side_a} : SideRef{itf.patch_b, itf.side_b});
-    }
-  return out;
-}
 
 // Knot interval of each net edge (P_i, P_{i+1}) along one direction, the
 // knots scaled to [0, 1]; zero intervals take the nearest positive one.
@@ -190,23 +172,25 @@ void build_cage_edges(Cage& cage) {
 Cage surface_cage(const MultiPatch& mp, int label, const CageOptions& options) {
   if (label < 0 || label >= static_cast<int>(mp.labels.size()))
     throw bad_input("T-NURCC cage: label " + std::to_string(label) + " does not exist");
-  const std::vector<SideRef> sides = sides_of_label(mp, label);
+  const std::vector<std::pair<int, Side>> sides = sides_on_surface(mp, label);
   if (sides.empty()) throw bad_input("T-NURCC cage: no patch side stands for label '" + mp.labels[label] + "'");
   const GlobalNumbering numbering = global_numbering(mp);
   std::vector<int> vertex_of_global(numbering.count, -1);
   std::vector<Eigen::Vector3d> points;
   Cage cage;
   std::vector<std::array<double, 2>> cell_intervals;  // per face: along i, along j
-  for (const SideRef& s : sides) {
-    const Patch& p = mp.patches[s.patch];
-    const auto td = s.side.tangent_directions();
-    const std::vector<int> ids = side_control_points(p, s.side);
+  for (const auto& ps : sides) {
+    const int patch = ps.first;
+    const Side side = ps.second;
+    const Patch& p = mp.patches[patch];
+    const auto td = side.tangent_directions();
+    const std::vector<int> ids = side_control_points(p, side);
     const int na = p.count(td[0]), nb = p.count(td[1]);
     const std::vector<double> da = net_intervals(p.knots[td[0]], p.degrees[td[0]]);
     const std::vector<double> db = net_intervals(p.knots[td[1]], p.degrees[td[1]]);
     auto vertex = [&](int i, int j) {
       const int local = ids[i + na * j];
-      int& v = vertex_of_global[numbering.global[s.patch][local]];
+      int& v = vertex_of_global[numbering.global[patch][local]];
       if (v < 0) {
         v = static_cast<int>(points.size());
         points.push_back(p.control_points.row(local).transpose());
@@ -216,7 +200,7 @@ Cage surface_cage(const MultiPatch& mp, int label, const CageOptions& options) {
     for (int j = 0; j + 1 < nb; ++j)
       for (int i = 0; i + 1 < na; ++i) {
         cage.faces.push_back({{vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j + 1)}});
-        cage.origin.push_back({s.patch, s.side, {{{{i, j}}, {{i + 1, j}}, {{i + 1, j + 1}}, {{i, j + 1}}}}});
+        cage.origin.push_back({patch, side, {{{{i, j}}, {{i + 1, j}}, {{i + 1, j + 1}}, {{i, j + 1}}}}});
         cell_intervals.push_back({{da[i], db[j]}});
       }
   }

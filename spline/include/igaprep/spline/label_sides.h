@@ -3,6 +3,7 @@
 // material interface lies on, and which boundary label each outer side has.
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "igaprep/spline/multipatch.h"
@@ -30,5 +31,11 @@ std::string label_list(const MultiPatch& mp);
 
 // The labels that a boundary side or a material interface stands for, increasing.
 std::vector<int> labels_with_sides(const MultiPatch& mp);
+
+// The patch sides standing for surface `label`, as (patch, side): boundary
+// sides labelled with it, then the interfaces lying on it, each taken from
+// the inner material's patch (material i lies inside surface i, the higher
+// index), so that out of the patch is out of the surface.
+std::vector<std::pair<int, Side>> sides_on_surface(const MultiPatch& mp, int label);
 
 }  // namespace igaprep::spline

@@ -1,0 +1,379 @@
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+#include <unsupported/Eigen/KroneckerProduct>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <string>
+
+#include "igaprep/core/error.h"
+#include "igaprep/spline/basis.h"
+#include "igaprep/spline/tspline_functions.h"
+#include "igaprep/spline/tspline_model.h"
+#include "tspline_common.h"
+
+namespace igaprep::spline {
+
+namespace {
+
+// The B-spline of degree knots.size() - 2 on its own knots at u (u inside a
+// non-empty span, so no end convention is needed).
+double single_bspline(const std::vector<double>& knots, double u) {
+  const int p = static_cast<int>(knots.size()) - 2;
+  std::vector<double> N(static_cast<std::size_t>(p) + 1);
+  for (int i = 0; i <= p; ++i) N[static_cast<std::size_t>(i)] = knots[static_cast<std::size_t>(i)] <= u && u < knots[static_cast<std::size_t>(i) + 1] ? 1.0 : 0.0;
+  for (int k = 1; k <= p; ++k)
+    for (int i = 0; i + k <= p; ++i) {
+      const double a0 = knots[static_cast<std::size_t>(i)], a1 = knots[static_cast<std::size_t>(i + k)];
+      const double b0 = knots[static_cast<std::size_t>(i + 1)], b1 = knots[static_cast<std::size_t>(i + k + 1)];
+      const double left = a1 > a0 ? (u - a0) / (a1 - a0) * N[static_cast<std::size_t>(i)] : 0.0;
+      const double right = b1 > b0 ? (b1 - u) / (b1 - b0) * N[static_cast<std::size_t>(i) + 1] : 0.0;
+      N[static_cast<std::size_t>(i)] = left + right;
+    }
+  return N[0];
+}
+
+// Values at the nodes (j + 1/2) / (p + 1) of [0, 1] to Bernstein
+// coefficients: the inverse of the Bernstein collocation matrix.
+Eigen::MatrixXd bernstein_from_values(int p) {
+  Eigen::MatrixXd M(p + 1, p + 1);
+  std::vector<double> B(static_cast<std::size_t>(p) + 1);
+  for (int j = 0; j <= p; ++j) {
+    bernstein_basis(p, (j + 0.5) / (p + 1), B.data());
+    for (int k = 0; k <= p; ++k) M(j, k) = B[static_cast<std::size_t>(k)];
+  }
+  return M.inverse();
+}
+
+// Everything the elements of one patch need, per direction.
+struct PatchContext {
+  const Patch& patch;
+  const TMesh& mesh;
+  std::array<std::vector<double>, 3> breaks;
+  std::array<Eigen::MatrixXd, 3> to_bernstein;
+  PatchContext(const Patch& p, const TMesh& m) : patch(p), mesh(m) {
+    for (std::size_t d = 0; d < 3; ++d) {
+      breaks[d] = detail::knot_breaks(p.knots[d]);
+      to_bernstein[d] = bernstein_from_values(p.degrees[d]);
+    }
+  }
+  double parameter(int d, TCoord x) const { return detail::index_to_parameter(breaks[static_cast<std::size_t>(d)], x); }
+  double node(int d, double a, double b, int j) const {
+    return a + (j + 0.5) / (patch.degrees[static_cast<std::size_t>(d)] + 1) * (b - a);
+  }
+};
+
+struct SubBox {
+  std::array<TCoord, 3> lo, hi;
+  int element = 0;  // of the patch, u fastest
+};
+
+bool meets(const TFunction& f, const TMesh& mesh, const std::array<TCoord, 3>& lo, const std::array<TCoord, 3>& hi) {
+  for (int d = 0; d < 3; ++d)
+    if (!(f.support_lo(d) < hi[static_cast<std::size_t>(d)] && lo[static_cast<std::size_t>(d)] < f.support_hi(d, mesh))) return false;
+  return true;
+}
+
+// Per patch element the functions whose support meets it.
+std::vector<std::vector<int>> functions_by_element(const TMesh& mesh, const std::vector<TFunction>& functions) {
+  std::vector<std::vector<int>> out(static_cast<std::size_t>(mesh.elements()[0] * mesh.elements()[1] * mesh.elements()[2]));
+  for (std::size_t f = 0; f < functions.size(); ++f) {
+    std::array<int, 3> first{}, last{};
+    for (int d = 0; d < 3; ++d) {
+      first[static_cast<std::size_t>(d)] = static_cast<int>(functions[f].support_lo(d) / kTScale);
+      last[static_cast<std::size_t>(d)] = static_cast<int>((functions[f].support_hi(d, mesh) - 1) / kTScale);
+    }
+    for (int k = first[2]; k <= last[2]; ++k)
+      for (int j = first[1]; j <= last[1]; ++j)
+        for (int i = first[0]; i <= last[0]; ++i)
+          out[static_cast<std::size_t>(i + mesh.elements()[0] * (j + mesh.elements()[1] * k))].push_back(static_cast<int>(f));
+  }
+  return out;
+}
+
+// A box split where the knots of the functions on it run through it.
+std::vector<SubBox> bezier_cells(const TBox& q, const std::vector<TFunction>& functions, const std::vector<int>& on_box) {
+  std::array<std::vector<TCoord>, 3> cuts;
+  for (std::size_t d = 0; d < 3; ++d) {
+    cuts[d] = {q.lo[d], q.hi[d]};
+    for (const int f : on_box)
+      for (const TCoord k : functions[static_cast<std::size_t>(f)].knots[d])
+        if (q.lo[d] < k && k < q.hi[d]) cuts[d].push_back(k);
+    std::sort(cuts[d].begin(), cuts[d].end());
+    cuts[d].erase(std::unique(cuts[d].begin(), cuts[d].end()), cuts[d].end());
+  }
+  std::vector<SubBox> out;
+  for (std::size_t k = 0; k + 1 < cuts[2].size(); ++k)
+    for (std::size_t j = 0; j + 1 < cuts[1].size(); ++j)
+      for (std::size_t i = 0; i + 1 < cuts[0].size(); ++i)
+        out.push_back({{{cuts[0][i], cuts[1][j], cuts[2][k]}}, {{cuts[0][i + 1], cuts[1][j + 1], cuts[2][k + 1]}}, q.element});
+  return out;
+}
+
+// The Bernstein coefficients of function f along d on [a, b] (parameters).
+Eigen::VectorXd bernstein_1d(const PatchContext& ctx, const TFunction& f, int d, double a, double b) {
+  const int p = ctx.patch.degrees[static_cast<std::size_t>(d)];
+  std::vector<double> knots;
+  for (const TCoord x : f.knots[static_cast<std::size_t>(d)]) knots.push_back(ctx.parameter(d, x));
+  Eigen::VectorXd values(p + 1);
+  for (int j = 0; j <= p; ++j) values[j] = single_bspline(knots, ctx.node(d, a, b, j));
+  return ctx.to_bernstein[static_cast<std::size_t>(d)] * values;
+}
+
+// The patch's homogeneous geometry (x w, y w, z w, w) on a cell as
+// Bernstein coefficients (u fastest).
+Eigen::MatrixXd cell_geometry(const PatchContext& ctx, const std::array<std::array<double, 2>, 3>& dom) {
+  const Patch& P = ctx.patch;
+  std::array<BasisTable, 3> tables;
+  std::array<int, 3> nodes{};
+  for (std::size_t d = 0; d < 3; ++d) {
+    std::vector<double> u;
+    nodes[d] = P.degrees[d] + 1;
+    for (int j = 0; j < nodes[d]; ++j) u.push_back(ctx.node(static_cast<int>(d), dom[d][0], dom[d][1], j));
+    tables[d] = basis_table(P.knots[d], P.degrees[d], u, 0);
+  }
+  const Eigen::Index n = nodes[0] * nodes[1] * nodes[2];
+  Eigen::MatrixXd values = Eigen::MatrixXd::Zero(n, 4);
+  for (int c = 0; c < nodes[2]; ++c)
+    for (int b = 0; b < nodes[1]; ++b)
+      for (int a = 0; a < nodes[0]; ++a) {
+        const Eigen::Index row = a + nodes[0] * (b + nodes[1] * c);
+        const double* Nu = tables[0].at(a, 0);
+        const double* Nv = tables[1].at(b, 0);
+        const double* Nw = tables[2].at(c, 0);
+        for (int k = 0; k <= P.degrees[2]; ++k)
+          for (int j = 0; j <= P.degrees[1]; ++j)
+            for (int i = 0; i <= P.degrees[0]; ++i) {
+              const int l = P.index(tables[0].span[static_cast<std::size_t>(a)] - P.degrees[0] + i,
+                                    tables[1].span[static_cast<std::size_t>(b)] - P.degrees[1] + j,
+                                    tables[2].span[static_cast<std::size_t>(c)] - P.degrees[2] + k);
+              const double N = Nu[i] * Nv[j] * Nw[k];
+              const double w = P.rational() ? P.weights[l] : 1.0;
+              values.row(row).head<3>() += N * w * P.control_points.row(l);
+              values(row, 3) += N * w;
+            }
+      }
+  // Values to coefficients: the inverse collocation per direction (Kronecker).
+  const Eigen::MatrixXd K = Eigen::kroneckerProduct(ctx.to_bernstein[2], Eigen::kroneckerProduct(ctx.to_bernstein[1], ctx.to_bernstein[0]));
+  return K * values;
+}
+
+struct PatchCells {
+  std::vector<ExtractionElement> elements;
+  std::vector<Eigen::MatrixXd> C;    // per element
+  std::vector<TFunction> functions;  // of the patch
+  Eigen::MatrixXd homogeneous;       // per function (x w, y w, z w, w) from nestedness
+};
+
+PatchCells patch_cells(const Patch& patch, const TMesh& mesh, int patch_index, double tolerance) {
+  PatchCells out;
+  out.functions = tspline_functions(mesh);
+  if (const auto bad = dual_compatibility_violation(mesh, out.functions))
+    throw internal_error("T-spline: the mesh of patch " + std::to_string(patch_index) + " is not dual compatible (functions " +
+                         std::to_string(bad->first) + " and " + std::to_string(bad->second) + ")");
+  const PatchContext ctx(patch, mesh);
+  const std::vector<std::vector<int>> by_element = functions_by_element(mesh, out.functions);
+  std::vector<Eigen::Triplet<double>> normal;
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(out.functions.size()), 4);
+  std::vector<Eigen::MatrixXd> geometry;
+  for (const TBox& q : mesh.boxes()) {
+    std::vector<int> on_box;
+    for (const int f : by_element[static_cast<std::size_t>(q.element)])
+      if (meets(out.functions[static_cast<std::size_t>(f)], mesh, q.lo, q.hi)) on_box.push_back(f);
+    for (const SubBox& cell : bezier_cells(q, out.functions, on_box)) {
+      ExtractionElement e;
+      e.degrees = patch.degrees;
+      e.material = patch.material;
+      e.patch = patch_index;
+      for (int d = 0; d < 3; ++d) {
+        e.index[static_cast<std::size_t>(d)] = static_cast<int>(cell.lo[static_cast<std::size_t>(d)] / kTScale);
+        e.domain[static_cast<std::size_t>(d)] = {{ctx.parameter(d, cell.lo[static_cast<std::size_t>(d)]), ctx.parameter(d, cell.hi[static_cast<std::size_t>(d)])}};
+      }
+      std::vector<Eigen::VectorXd> rows;
+      for (const int f : on_box) {
+        const TFunction& fn = out.functions[static_cast<std::size_t>(f)];
+        if (!meets(fn, mesh, cell.lo, cell.hi)) continue;
+        Eigen::VectorXd b[3];
+        for (int d = 0; d < 3; ++d) b[d] = bernstein_1d(ctx, fn, d, e.domain[static_cast<std::size_t>(d)][0], e.domain[static_cast<std::size_t>(d)][1]);
+        rows.push_back(Eigen::kroneckerProduct(b[2], Eigen::kroneckerProduct(b[1], b[0]).eval()).eval());
+        e.functions.push_back(f);
+      }
+      Eigen::MatrixXd C(static_cast<Eigen::Index>(rows.size()), rows.empty() ? 0 : rows[0].size());
+      for (std::size_t r = 0; r < rows.size(); ++r) C.row(static_cast<Eigen::Index>(r)) = rows[r].transpose();
+      const Eigen::MatrixXd G = cell_geometry(ctx, e.domain);
+      const Eigen::MatrixXd CCt = C * C.transpose(), CG = C * G;
+      for (std::size_t r = 0; r < e.functions.size(); ++r) {
+        rhs.row(e.functions[r]) += CG.row(static_cast<Eigen::Index>(r));
+        for (std::size_t s = 0; s < e.functions.size(); ++s)
+          normal.emplace_back(e.functions[r], e.functions[s], CCt(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(s)));
+      }
+      out.elements.push_back(std::move(e));
+      out.C.push_back(std::move(C));
+      geometry.push_back(G);
+    }
+  }
+  Eigen::SparseMatrix<double> A(static_cast<Eigen::Index>(out.functions.size()), static_cast<Eigen::Index>(out.functions.size()));
+  A.setFromTriplets(normal.begin(), normal.end());
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
+  if (solver.info() != Eigen::Success) throw internal_error("T-spline: the functions of patch " + std::to_string(patch_index) + " are not independent");
+  out.homogeneous = solver.solve(rhs);
+  // Nestedness: the old geometry must come back exactly on every cell.
+  for (std::size_t c = 0; c < out.elements.size(); ++c) {
+    Eigen::MatrixXd H(static_cast<Eigen::Index>(out.elements[c].functions.size()), 4);
+    for (std::size_t r = 0; r < out.elements[c].functions.size(); ++r) H.row(static_cast<Eigen::Index>(r)) = out.homogeneous.row(out.elements[c].functions[r]);
+    const double off = (out.C[c].transpose() * H - geometry[c]).cwiseAbs().maxCoeff();
+    if (!(off <= tolerance))
+      throw internal_error("T-spline: patch " + std::to_string(patch_index) + " does not reproduce its geometry (off by " +
+                           std::to_string(off) + ")");
+  }
+  return out;
+}
+
+
+// Union-find over (patch, function) with patch offsets.
+struct FunctionClasses {
+  std::vector<int> parent;
+  int find(int x) {
+    while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+    return x;
+  }
+  void join(int a, int b) { parent[static_cast<std::size_t>(find(a))] = find(b); }
+};
+
+using Anchor = std::array<TCoord, 3>;
+
+Anchor anchor_of(const TFunction& f) { return {{f.anchor(0), f.anchor(1), f.anchor(2)}}; }
+
+// Joins the functions that do not vanish on an interface (p + 1 repeated
+// end knots across it) with their twins on the other side: the same anchor
+// through the interface's direction map, the same knots along the face.
+void join_interface(const TSplineModel& m, const Interface& itf, const std::vector<PatchCells>& cells,
+                    const std::vector<int>& offset, FunctionClasses& classes) {
+  const TMesh& A = m.meshes[static_cast<std::size_t>(itf.patch_a)];
+  const TMesh& B = m.meshes[static_cast<std::size_t>(itf.patch_b)];
+  const int na = itf.side_a.direction(), nb = itf.side_b.direction();
+  const TCoord r_a = (A.degrees()[static_cast<std::size_t>(na)] - 1) / 2 * kTScale;
+  const TCoord r_b = (B.degrees()[static_cast<std::size_t>(nb)] - 1) / 2 * kTScale;
+  const TCoord on_a = itf.side_a.parameter() ? A.extent(na) + r_a : -r_a;
+  const TCoord on_b = itf.side_b.parameter() ? B.extent(nb) + r_b : -r_b;
+  std::map<Anchor, int> b_at;
+  const std::vector<TFunction>& fb = cells[static_cast<std::size_t>(itf.patch_b)].functions;
+  for (std::size_t f = 0; f < fb.size(); ++f)
+    if (fb[f].anchor(nb) == on_b) b_at.emplace(anchor_of(fb[f]), static_cast<int>(f));
+  const std::vector<TFunction>& fa = cells[static_cast<std::size_t>(itf.patch_a)].functions;
+  for (std::size_t f = 0; f < fa.size(); ++f) {
+    if (fa[f].anchor(na) != on_a) continue;
+    Anchor at{};
+    at[static_cast<std::size_t>(nb)] = on_b;
+    for (const int d : itf.side_a.tangent_directions()) {
+      const int db = itf.dirmap[static_cast<std::size_t>(d)];
+      at[static_cast<std::size_t>(db)] = itf.orient[static_cast<std::size_t>(d)] ? fa[f].anchor(d) : B.extent(db) - fa[f].anchor(d);
+    }
+    const auto twin = b_at.find(at);
+    if (twin == b_at.end())
+      throw internal_error("T-spline: interface of patches " + std::to_string(itf.patch_a) + " and " + std::to_string(itf.patch_b) +
+                           ": a function on the face has no twin");
+    for (const int d : itf.side_a.tangent_directions()) {
+      const int db = itf.dirmap[static_cast<std::size_t>(d)];
+      std::vector<TCoord> mapped;
+      for (const TCoord x : fa[f].knots[static_cast<std::size_t>(d)]) mapped.push_back(itf.orient[static_cast<std::size_t>(d)] ? x : B.extent(db) - x);
+      std::sort(mapped.begin(), mapped.end());
+      if (mapped != fb[static_cast<std::size_t>(twin->second)].knots[static_cast<std::size_t>(db)])
+        throw internal_error("T-spline: interface of patches " + std::to_string(itf.patch_a) + " and " + std::to_string(itf.patch_b) +
+                             ": twin functions with different knots along the face");
+    }
+    classes.join(offset[static_cast<std::size_t>(itf.patch_a)] + static_cast<int>(f), offset[static_cast<std::size_t>(itf.patch_b)] + twin->second);
+  }
+}
+
+double model_scale(const MultiPatch& mp) {
+  double s = 1.0;
+  for (const Patch& p : mp.patches) s = std::max(s, p.control_points.cwiseAbs().maxCoeff() * (p.rational() ? p.weights.maxCoeff() : 1.0));
+  return s;
+}
+
+// Operators keyed by their entries (rounded to 1e-13): elements with the
+// same knot pattern share one.
+int operator_id(std::map<std::vector<long long>, int>& ids, std::vector<Eigen::MatrixXd>& operators, const Eigen::MatrixXd& C) {
+  std::vector<long long> key{C.rows(), C.cols()};
+  for (Eigen::Index i = 0; i < C.size(); ++i) key.push_back(std::llround(C.data()[i] * 1e13));
+  const auto [it, added] = ids.emplace(std::move(key), static_cast<int>(operators.size()));
+  if (added) operators.push_back(C);
+  return it->second;
+}
+
+void add_boundary_faces(const TSplineModel& m, int patch, int first_element, const PatchCells& cells, ExtractionModel& out) {
+  const Patch& P = m.base.patches[static_cast<std::size_t>(patch)];
+  for (const BoundarySide& b : m.base.boundaries) {
+    if (b.patch != patch) continue;
+    const std::size_t n = static_cast<std::size_t>(b.side.direction()), end = b.side.parameter() ? 1 : 0;
+    const double at = end ? P.knots[n].back() : P.knots[n].front();
+    for (std::size_t e = 0; e < cells.elements.size(); ++e)
+      if (cells.elements[e].domain[n][end] == at) out.boundary_faces.push_back({first_element + static_cast<int>(e), b.side, b.label});
+  }
+}
+
+}  // namespace
+
+ExtractionModel extraction_model(const TSplineModel& model) {
+  const MultiPatch& mp = model.base;
+  const double scale = model_scale(mp);
+  std::vector<PatchCells> cells;
+  std::vector<int> offset;
+  int total = 0;
+  for (std::size_t p = 0; p < mp.patches.size(); ++p) {
+    cells.push_back(patch_cells(mp.patches[p], model.meshes[p], static_cast<int>(p), 1e-10 * scale));
+    offset.push_back(total);
+    total += static_cast<int>(cells.back().functions.size());
+  }
+  FunctionClasses classes{std::vector<int>(static_cast<std::size_t>(total))};
+  std::iota(classes.parent.begin(), classes.parent.end(), 0);
+  for (const Interface& itf : mp.interfaces) join_interface(model, itf, cells, offset, classes);
+  // Global ids in order of first appearance; every copy must agree.
+  std::vector<int> global(static_cast<std::size_t>(total), -1), id_of_class(static_cast<std::size_t>(total), -1);
+  std::vector<Eigen::RowVector4d> homogeneous;
+  for (std::size_t p = 0; p < cells.size(); ++p)
+    for (Eigen::Index f = 0; f < cells[p].homogeneous.rows(); ++f) {
+      const int x = offset[p] + static_cast<int>(f), c = classes.find(x);
+      if (id_of_class[static_cast<std::size_t>(c)] < 0) {
+        id_of_class[static_cast<std::size_t>(c)] = static_cast<int>(homogeneous.size());
+        homogeneous.push_back(cells[p].homogeneous.row(f));
+      } else if ((homogeneous[static_cast<std::size_t>(id_of_class[static_cast<std::size_t>(c)])] - cells[p].homogeneous.row(f)).cwiseAbs().maxCoeff() > 1e-9 * scale) {
+        throw internal_error("T-spline: patch " + std::to_string(p) + " function " + std::to_string(f) +
+                             " differs from its twin across an interface");
+      }
+      global[static_cast<std::size_t>(x)] = id_of_class[static_cast<std::size_t>(c)];
+    }
+  ExtractionModel out;
+  out.control_points.resize(static_cast<Eigen::Index>(homogeneous.size()), 3);
+  out.weights.resize(static_cast<Eigen::Index>(homogeneous.size()));
+  for (std::size_t g = 0; g < homogeneous.size(); ++g) {
+    out.weights[static_cast<Eigen::Index>(g)] = homogeneous[g][3];
+    out.control_points.row(static_cast<Eigen::Index>(g)) = homogeneous[g].head<3>() / homogeneous[g][3];
+  }
+  // A polynomial model keeps weights of exactly 1.
+  bool rational = false;
+  for (const Patch& p : mp.patches) rational = rational || p.rational();
+  if (!rational) out.weights.setOnes();
+  std::map<std::vector<long long>, int> ids;
+  for (std::size_t p = 0; p < cells.size(); ++p) {
+    const int first = static_cast<int>(out.elements.size());
+    for (std::size_t e = 0; e < cells[p].elements.size(); ++e) {
+      ExtractionElement el = cells[p].elements[e];
+      for (int& f : el.functions) f = global[static_cast<std::size_t>(offset[p] + f)];
+      el.extraction = operator_id(ids, out.operators, cells[p].C[e]);
+      out.elements.push_back(std::move(el));
+    }
+    add_boundary_faces(model, static_cast<int>(p), first, cells[p], out);
+  }
+  out.labels = mp.labels;
+  out.materials = mp.materials;
+  out.provenance_generator = mp.provenance_generator;
+  out.provenance_case = mp.provenance_case;
+  out.provenance_inputs = mp.provenance_inputs;
+  return out;
+}
+
+}  // namespace igaprep::spline

@@ -1,0 +1,188 @@
+// Trivariate T-splines (issue 18): analysis-suitable local refinement of
+// cubic patches in index space, the blending functions it makes, and their
+// Bezier extraction. Each refined model must keep the geometry (1e-12 of
+// the diagonal at 1,000 random points per patch), be dual compatible after
+// every step, hold a partition of unity on every element (1e-14) and have
+// linearly independent functions (full rank of the stacked extraction).
+#include <gtest/gtest.h>
+
+#include <Eigen/SVD>
+#include <random>
+
+#include "igaprep/core/error.h"
+#include "igaprep/spline/evaluate.h"
+#include "igaprep/spline/extraction_model.h"
+#include "igaprep/spline/multipatch_topology.h"
+#include "igaprep/spline/tspline_functions.h"
+#include "igaprep/spline/tspline_model.h"
+#include "spline/spline_test_util.h"
+
+using namespace spline_test;
+
+namespace {
+
+double diagonal(const MultiPatch& mp) {
+  Eigen::RowVector3d lo = Eigen::RowVector3d::Constant(1e300), hi = -lo;
+  for (const Patch& p : mp.patches) {
+    lo = lo.cwiseMin(p.control_points.colwise().minCoeff());
+    hi = hi.cwiseMax(p.control_points.colwise().maxCoeff());
+  }
+  return (hi - lo).norm();
+}
+
+MultiPatch one_patch(std::mt19937& rng, bool rational) {
+  MultiPatch mp;
+  mp.patches = {random_patch(rng, {{3, 3, 3}}, {{7, 6, 5}}, rational, 1)};
+  mp.labels = {"outer"};
+  mp.materials = {Material{"steel", 210e3, 0.3}};
+  for (const Side s : Side::all()) mp.boundaries.push_back({0, s, 0});
+  return mp;
+}
+
+// Patch 1 glued to the u1 face of patch 0 by its w0 face; 0's v runs along
+// 1's u reversed, 0's w along 1's v (as glued_patches, in cubics).
+MultiPatch two_patches(std::mt19937& rng) {
+  MultiPatch mp;
+  Patch A = random_patch(rng, {{3, 3, 3}}, {{6, 7, 5}}, true, 1);
+  Patch B;
+  B.degrees = {{3, 3, 3}};
+  std::vector<double> ku(A.knots[1].size());
+  for (size_t k = 0; k < ku.size(); ++k) ku[k] = 1.0 - A.knots[1][ku.size() - 1 - k];
+  B.knots = {{ku, A.knots[2], {0, 0, 0, 0, 0.3, 0.6, 1, 1, 1, 1}}};
+  const int n0 = B.count(0), n1 = B.count(1), n2 = B.count(2);
+  B.control_points.resize(n0 * n1 * n2, 3);
+  B.weights.resize(n0 * n1 * n2);
+  std::uniform_real_distribution<double> J(-0.05, 0.05);
+  for (int k = 0; k < n2; ++k)
+    for (int j = 0; j < n1; ++j)
+      for (int i = 0; i < n0; ++i) {
+        const int a = A.index(A.count(0) - 1, A.count(1) - 1 - i, j);
+        Eigen::RowVector3d x = A.control_points.row(a) + Eigen::RowVector3d(0.3 * k, 0, 0);
+        if (k > 0) x += Eigen::RowVector3d(J(rng), J(rng), J(rng));
+        B.control_points.row(B.index(i, j, k)) = x;
+        B.weights[B.index(i, j, k)] = k == 0 ? A.weights[a] : 1.0 + 0.1 * k;
+      }
+  mp.patches = {A, B};
+  Interface itf;
+  itf.patch_a = 0, itf.side_a = kU1, itf.patch_b = 1, itf.side_b = kW0;
+  itf.dirmap = {{2, 0, 1}};
+  itf.orient = {{1, 0, 1}};
+  mp.interfaces = {itf};
+  mp.labels = {"outer"};
+  mp.materials = {Material{"steel", 210e3, 0.3}};
+  for (const Side s : Side::all()) {
+    if (s != kU1) mp.boundaries.push_back({0, s, 0});
+    if (s != kW0) mp.boundaries.push_back({1, s, 0});
+  }
+  return mp;
+}
+
+// The largest distance between the extraction model and the multipatch at
+// 1,000 random points per patch, each in a random element of that patch.
+double geometry_error(const ExtractionModel& m, const MultiPatch& mp, std::mt19937& rng) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double worst = 0.0;
+  for (int p = 0; p < static_cast<int>(mp.patches.size()); ++p) {
+    std::vector<int> elements;
+    for (int e = 0; e < static_cast<int>(m.elements.size()); ++e)
+      if (m.elements[static_cast<std::size_t>(e)].patch == p) elements.push_back(e);
+    std::uniform_int_distribution<std::size_t> pick(0, elements.size() - 1);
+    for (int s = 0; s < 1000; ++s) {
+      const int e = elements[pick(rng)];
+      const ExtractionElement& el = m.elements[static_cast<std::size_t>(e)];
+      const Eigen::Vector3d t(unit(rng), unit(rng), unit(rng));
+      Eigen::Vector3d xi;
+      for (int d = 0; d < 3; ++d) xi[d] = el.domain[d][0] + t[d] * (el.domain[d][1] - el.domain[d][0]);
+      worst = std::max(worst, (evaluate_element(m, e, t) - evaluate_point(mp.patches[static_cast<std::size_t>(p)], xi)).norm());
+    }
+  }
+  return worst;
+}
+
+// The largest |sum of a column of C_e - 1| over every element.
+double partition_of_unity_error(const ExtractionModel& m) {
+  double worst = 0.0;
+  for (std::size_t e = 0; e < m.elements.size(); ++e)
+    worst = std::max(worst, (m.C(static_cast<int>(e)).colwise().sum().array() - 1.0).abs().maxCoeff());
+  return worst;
+}
+
+// Every function as the row of its Bernstein coefficients on all elements;
+// the smallest singular value over the largest (0 for dependent functions).
+double stacked_extraction_conditioning(const ExtractionModel& m) {
+  Eigen::Index columns = 0;
+  for (std::size_t e = 0; e < m.elements.size(); ++e) columns += m.C(static_cast<int>(e)).cols();
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(m.function_count(), columns);
+  Eigen::Index at = 0;
+  for (std::size_t e = 0; e < m.elements.size(); ++e) {
+    const Eigen::MatrixXd& C = m.C(static_cast<int>(e));
+    for (std::size_t r = 0; r < m.elements[e].functions.size(); ++r)
+      S.block(m.elements[e].functions[r], at, 1, C.cols()) = C.row(static_cast<Eigen::Index>(r));
+    at += C.cols();
+  }
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(S);
+  return svd.singularValues().minCoeff() / svd.singularValues().maxCoeff();
+}
+
+// Box corners inside a face or an edge of another box: T-junctions.
+int t_junctions(const TMesh& mesh) {
+  int n = 0;
+  for (const TBox& b : mesh.boxes())
+    for (int c = 0; c < 8; ++c) {
+      const std::array<TCoord, 3> v{{(c & 1) ? b.hi[0] : b.lo[0], (c & 2) ? b.hi[1] : b.lo[1], (c & 4) ? b.hi[2] : b.lo[2]}};
+      for (const TBox& q : mesh.boxes()) {
+        bool inside = true, corner = true;
+        for (std::size_t d = 0; d < 3; ++d) {
+          inside = inside && q.lo[d] <= v[d] && v[d] <= q.hi[d];
+          corner = corner && (v[d] == q.lo[d] || v[d] == q.hi[d]);
+        }
+        if (inside && !corner) {
+          ++n;
+          break;
+        }
+      }
+    }
+  return n;
+}
+
+bool dual_compatible(const TSplineModel& t) {
+  for (const TMesh& mesh : t.meshes)
+    if (dual_compatibility_violation(mesh, tspline_functions(mesh))) return false;
+  return true;
+}
+
+TEST(TSpline, TheTensorMeshIsThePatch) {
+  std::mt19937 rng(3);
+  const MultiPatch mp = two_patches(rng);
+  const TSplineModel t = tspline_model(mp);
+  const ExtractionModel m = extraction_model(t);
+  const ExtractionModel reference = extraction_model(mp);
+  EXPECT_EQ(m.function_count(), reference.function_count());
+  EXPECT_EQ(m.elements.size(), reference.elements.size());
+  EXPECT_EQ(m.boundary_faces.size(), reference.boundary_faces.size());
+  EXPECT_EQ(static_cast<int>(tspline_functions(t.meshes[0]).size()), mp.patches[0].count(0) * mp.patches[0].count(1) * mp.patches[0].count(2));
+  EXPECT_LT(geometry_error(m, mp, rng), 1e-12 * diagonal(mp));
+  EXPECT_LT(partition_of_unity_error(m), 1e-14);
+  EXPECT_EQ(t_junctions(t.meshes[0]), 0);
+}
+
+TEST(TSpline, LocalRefinementKeepsTheGeometryAndIsAnalysisSuitable) {
+  for (const bool rational : {false, true}) {
+    std::mt19937 rng(rational ? 7 : 5);
+    const MultiPatch mp = one_patch(rng, rational);
+    TSplineModel t = tspline_model(mp);
+    for (int step = 0; step < 6; ++step) {
+      std::uniform_int_distribution<int> pick(0, static_cast<int>(t.meshes[0].boxes().size()) - 1);
+      refine_boxes(t, {{0, pick(rng)}, {0, pick(rng)}});
+      ASSERT_TRUE(dual_compatible(t)) << "step " << step;
+      const ExtractionModel m = extraction_model(t);
+      EXPECT_LT(geometry_error(m, mp, rng), 1e-12 * diagonal(mp)) << "step " << step;
+      EXPECT_LT(partition_of_unity_error(m), 1e-14) << "step " << step;
+    }
+    const ExtractionModel m = extraction_model(t);
+    EXPECT_GT(t_junctions(t.meshes[0]), 0);
+    EXPECT_GT(stacked_extraction_conditioning(m), 1e-8);
+  }
+}
+
+}  // namespace

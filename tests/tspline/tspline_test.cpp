@@ -10,6 +10,7 @@
 #include <random>
 
 #include "igaprep/core/error.h"
+#include "igaprep/spline/basis.h"
 #include "igaprep/spline/evaluate.h"
 #include "igaprep/spline/extraction_model.h"
 #include "igaprep/spline/multipatch_topology.h"
@@ -183,6 +184,111 @@ TEST(TSpline, LocalRefinementKeepsTheGeometryAndIsAnalysisSuitable) {
     EXPECT_GT(t_junctions(t.meshes[0]), 0);
     EXPECT_GT(stacked_extraction_conditioning(m), 1e-8);
   }
+}
+
+// A scalar field with coefficient c[f] per function at parameter xi of a
+// patch: the sum over the functions of the element holding xi.
+double field_at(const ExtractionModel& m, int patch, const Eigen::Vector3d& xi, const Eigen::VectorXd& c) {
+  for (std::size_t e = 0; e < m.elements.size(); ++e) {
+    const ExtractionElement& el = m.elements[e];
+    if (el.patch != patch) continue;
+    Eigen::Vector3d t;
+    bool inside = true;
+    for (int d = 0; d < 3; ++d) {
+      t[d] = (xi[d] - el.domain[d][0]) / (el.domain[d][1] - el.domain[d][0]);
+      inside = inside && t[d] >= 0.0 && t[d] <= 1.0;
+    }
+    if (!inside) continue;
+    std::array<std::vector<double>, 3> B;
+    for (int d = 0; d < 3; ++d) {
+      B[d].resize(static_cast<std::size_t>(el.degrees[d]) + 1);
+      bernstein_basis(el.degrees[d], t[d], B[d].data());
+    }
+    const Eigen::MatrixXd& C = m.C(static_cast<int>(e));
+    double value = 0.0;
+    for (std::size_t r = 0; r < el.functions.size(); ++r)
+      for (Eigen::Index k = 0; k < C.cols(); ++k) {
+        const int iu = static_cast<int>(k % (el.degrees[0] + 1)), iv = static_cast<int>(k / (el.degrees[0] + 1) % (el.degrees[1] + 1)),
+                  iw = static_cast<int>(k / ((el.degrees[0] + 1) * (el.degrees[1] + 1)));
+        value += c[el.functions[r]] * C(static_cast<Eigen::Index>(r), k) * B[0][static_cast<std::size_t>(iu)] * B[1][static_cast<std::size_t>(iv)] *
+                 B[2][static_cast<std::size_t>(iw)];
+      }
+    return value;
+  }
+  ADD_FAILURE() << "no element of patch " << patch << " holds the point";
+  return 0.0;
+}
+
+TEST(TSpline, RefinementAtAnInterfaceIsMirroredAndTheSpaceStaysC0) {
+  std::mt19937 rng(9);
+  const MultiPatch mp = two_patches(rng);
+  TSplineModel t = tspline_model(mp);
+  const std::size_t b_boxes = t.meshes[1].boxes().size();
+  // Patch 0's boxes on its u1 face (the interface), twice.
+  for (int round = 0; round < 2; ++round) {
+    std::vector<std::pair<int, int>> face;
+    for (std::size_t b = 0; b < t.meshes[0].boxes().size(); ++b)
+      if (t.meshes[0].boxes()[b].hi[0] == t.meshes[0].extent(0) && t.meshes[0].boxes()[b].lo[1] == 0) face.push_back({0, static_cast<int>(b)});
+    refine_boxes(t, face);
+  }
+  EXPECT_GT(t.meshes[1].boxes().size(), b_boxes);
+  EXPECT_TRUE(dual_compatible(t));
+  const ExtractionModel m = extraction_model(t);
+  EXPECT_LT(geometry_error(m, mp, rng), 1e-12 * diagonal(mp));
+  EXPECT_LT(partition_of_unity_error(m), 1e-14);
+  // Fewer functions than the two patches' own: the interface's are shared.
+  const long own = static_cast<long>(tspline_functions(t.meshes[0]).size() + tspline_functions(t.meshes[1]).size());
+  EXPECT_LT(m.function_count(), own);
+  // A random field of the space is continuous across the interface:
+  // patch 0 at (1, v, w) is patch 1 at (1 - v, w, 0).
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const Eigen::VectorXd c = Eigen::VectorXd::Random(m.function_count());
+  double jump = 0.0;
+  for (int s = 0; s < 200; ++s) {
+    const double v = unit(rng), w = unit(rng);
+    jump = std::max(jump, std::abs(field_at(m, 0, {1.0, v, w}, c) - field_at(m, 1, {1.0 - v, w, 0.0}, c)));
+  }
+  EXPECT_LT(jump, 1e-12);
+}
+
+// Four splits made by hand without the closure (a 2-D pattern of crossing
+// T-junction extensions, extruded through the one element of w): not dual
+// compatible, so refused; the same boxes refined with the closure are.
+TEST(TSpline, ANonAnalysisSuitableMeshIsRefusedAndTheClosureAvoidsIt) {
+  auto box_at = [](const TMesh& m, double u, double v) {
+    for (std::size_t b = 0; b < m.boxes().size(); ++b)
+      if (m.boxes()[b].lo[0] == static_cast<TCoord>(u * kTScale) && m.boxes()[b].lo[1] == static_cast<TCoord>(v * kTScale))
+        return static_cast<int>(b);
+    return -1;
+  };
+  const double corners[4][2] = {{0, 2}, {2, 2}, {0, 3}, {0.5, 2}};
+  TMesh raw({{4, 4, 1}}, {{3, 3, 3}}), closed = raw;
+  for (const auto& c : corners) {
+    raw.split(box_at(raw, c[0], c[1]));
+    closed.refine(box_at(closed, c[0], c[1]));
+  }
+  EXPECT_THROW(check_analysis_suitable(raw), igaprep::Error);
+  EXPECT_TRUE(dual_compatibility_violation(raw, tspline_functions(raw)).has_value());
+  EXPECT_NO_THROW(check_analysis_suitable(closed));
+  EXPECT_GT(closed.boxes().size(), raw.boxes().size());
+}
+
+TEST(TSpline, EvenDegreesAndRepeatedKnotsAreRefusedForRefinement) {
+  auto message = [](const MultiPatch& mp) {
+    try {
+      tspline_model(mp);
+    } catch (const igaprep::Error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  std::mt19937 rng(1);
+  MultiPatch mp = one_patch(rng, false);
+  mp.patches[0] = random_patch(rng, {{2, 3, 3}}, {{6, 6, 6}}, false, 1);
+  EXPECT_NE(message(mp).find("odd degrees"), std::string::npos) << message(mp);
+  mp.patches[0] = random_patch(rng, {{3, 3, 3}}, {{7, 6, 6}}, false, 1);
+  mp.patches[0].knots[0] = {0, 0, 0, 0, 0.4, 0.4, 0.7, 1, 1, 1, 1};
+  EXPECT_NE(message(mp).find("multiplicity above 1"), std::string::npos) << message(mp);
 }
 
 }  // namespace

@@ -10,9 +10,9 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "commands.h"
+#include "number_args.h"
 #include "igaprep/core/atomic_file.h"
 #include "igaprep/core/input_files.h"
 #include "igaprep/core/error.h"
@@ -29,26 +29,6 @@ struct SolveArgs {
   int refine = 0, elevate = 0;
   long long max_unknowns = iga_check::ElasticityOptions{}.max_unknowns;
 };
-
-double parse_number(const std::string& s, const std::string& what) {
-  try {
-    size_t used = 0;
-    const double v = std::stod(s, &used);
-    if (used == s.size() && std::isfinite(v)) return v;
-  } catch (const std::exception&) {
-  }
-  throw bad_input(what + ": '" + s + "' is not a finite number");
-}
-
-// Comma-separated numbers; empty items (a trailing comma) are refused.
-std::vector<double> parse_numbers(const std::string& s, const std::string& what) {
-  std::vector<double> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ',')) out.push_back(parse_number(item, what));
-  if (!s.empty() && s.back() == ',') throw bad_input(what + ": '" + s + "' ends with a comma");
-  return out;
-}
 
 Eigen::Vector3d parse_vector(const std::string& s, const std::string& what) {
   const std::vector<double> v = parse_numbers(s, what);

@@ -8,8 +8,11 @@
 
 namespace igaprep::spline {
 
-TMesh::TMesh(const std::array<int, 3>& elements, const std::array<int, 3>& degrees)
-    : elements_(elements), degrees_(degrees) {
+TMesh::TMesh(const std::array<int, 3>& elements, const std::array<int, 3>& degrees, const std::vector<int>& split_directions)
+    : elements_(elements), degrees_(degrees), split_directions_(split_directions) {
+  if (split_directions.empty()) throw bad_input("T-mesh: no direction to split");
+  for (const int d : split_directions)
+    if (d < 0 || d > 2) throw bad_input("T-mesh: split direction " + std::to_string(d) + " is not 0, 1 or 2");
   for (int d = 0; d < 3; ++d) {
     if (elements[static_cast<std::size_t>(d)] < 1) throw bad_input("T-mesh: a direction without elements");
     if (degrees[static_cast<std::size_t>(d)] < 1 || degrees[static_cast<std::size_t>(d)] % 2 == 0)
@@ -79,7 +82,7 @@ void TMesh::refine(int box) {
 
 void TMesh::split(int box) {
   TBox& b = boxes_[static_cast<std::size_t>(box)];
-  const std::size_t d = static_cast<std::size_t>(b.level % 3);
+  const std::size_t d = static_cast<std::size_t>(split_directions_[static_cast<std::size_t>(b.level) % split_directions_.size()]);
   const TCoord width = b.hi[d] - b.lo[d];
   if (width < 2 || width % 2 != 0) throw internal_error("T-mesh: more than 20 splits in direction " + std::to_string(d));
   TBox upper = b;

@@ -18,21 +18,39 @@ namespace igaprep::spline {
 
 namespace {
 
-// The B-spline of degree knots.size() - 2 on its own knots at u (u inside a
-// non-empty span, so no end convention is needed).
-double single_bspline(const std::vector<double>& knots, double u) {
-  const int p = static_cast<int>(knots.size()) - 2;
-  std::vector<double> N(static_cast<std::size_t>(p) + 1);
-  for (int i = 0; i <= p; ++i) N[static_cast<std::size_t>(i)] = knots[static_cast<std::size_t>(i)] <= u && u < knots[static_cast<std::size_t>(i) + 1] ? 1.0 : 0.0;
-  for (int k = 1; k <= p; ++k)
-    for (int i = 0; i + k <= p; ++i) {
-      const double a0 = knots[static_cast<std::size_t>(i)], a1 = knots[static_cast<std::size_t>(i + k)];
-      const double b0 = knots[static_cast<std::size_t>(i + 1)], b1 = knots[static_cast<std::size_t>(i + k + 1)];
-      const double left = a1 > a0 ? (u - a0) / (a1 - a0) * N[static_cast<std::size_t>(i)] : 0.0;
-      const double right = b1 > b0 ? (b1 - u) / (b1 - b0) * N[static_cast<std::size_t>(i) + 1] : 0.0;
-      N[static_cast<std::size_t>(i)] = left + right;
+// Boehm's insertion of knot x into the spline (K, c) of degree p.
+void insert_knot(std::vector<double>& K, std::vector<double>& c, int p, double x) {
+  const std::size_t s = static_cast<std::size_t>(std::upper_bound(K.begin(), K.end(), x) - K.begin()) - 1;
+  std::vector<double> out(c.size() + 1);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (i + static_cast<std::size_t>(p) <= s) out[i] = c[i];
+    else if (i > s) out[i] = c[i - 1];
+    else {
+      const double alpha = (x - K[i]) / (K[i + static_cast<std::size_t>(p)] - K[i]);
+      out[i] = alpha * c[i] + (1.0 - alpha) * c[i - 1];
     }
-  return N[0];
+  }
+  K.insert(K.begin() + static_cast<std::ptrdiff_t>(s) + 1, x);
+  c = std::move(out);
+}
+
+// The Bernstein coefficients on [a, b] (inside one span) of the B-spline of
+// degree knots.size() - 2 on its own knots: the function as one of a clamped
+// spline, a and b inserted to multiplicity p (exact, so zeros stay zeros).
+Eigen::VectorXd bspline_bernstein(const std::vector<double>& knots, double a, double b) {
+  const int p = static_cast<int>(knots.size()) - 2;
+  std::vector<double> K(static_cast<std::size_t>(p), knots.front());
+  K.insert(K.end(), knots.begin(), knots.end());
+  K.insert(K.end(), static_cast<std::size_t>(p), knots.back());
+  std::vector<double> c(static_cast<std::size_t>(2 * p + 1), 0.0);
+  c[static_cast<std::size_t>(p)] = 1.0;
+  for (const double x : {a, b})
+    while (std::count(K.begin(), K.end(), x) < p) insert_knot(K, c, p, x);
+  // The last p copies of a are K[r + 1 .. r + p].
+  const std::ptrdiff_t r = (std::upper_bound(K.begin(), K.end(), a) - K.begin()) - 1 - p;
+  Eigen::VectorXd out(p + 1);
+  for (int j = 0; j <= p; ++j) out[j] = c[static_cast<std::size_t>(r + j)];
+  return out;
 }
 
 // Values at the nodes (j + 1/2) / (p + 1) of [0, 1] to Bernstein
@@ -114,12 +132,9 @@ std::vector<SubBox> bezier_cells(const TBox& q, const std::vector<TFunction>& fu
 
 // The Bernstein coefficients of function f along d on [a, b] (parameters).
 Eigen::VectorXd bernstein_1d(const PatchContext& ctx, const TFunction& f, int d, double a, double b) {
-  const int p = ctx.patch.degrees[static_cast<std::size_t>(d)];
   std::vector<double> knots;
   for (const TCoord x : f.knots[static_cast<std::size_t>(d)]) knots.push_back(ctx.parameter(d, x));
-  Eigen::VectorXd values(p + 1);
-  for (int j = 0; j <= p; ++j) values[j] = single_bspline(knots, ctx.node(d, a, b, j));
-  return ctx.to_bernstein[static_cast<std::size_t>(d)] * values;
+  return bspline_bernstein(knots, a, b);
 }
 
 // The patch's homogeneous geometry (x w, y w, z w, w) on a cell as

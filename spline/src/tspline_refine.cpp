@@ -11,7 +11,7 @@ namespace igaprep::spline {
 
 namespace {
 
-TMesh tensor_mesh(const Patch& p, int index) {
+TMesh tensor_mesh(const Patch& p, int index, const std::vector<int>& split_directions) {
   std::array<int, 3> elements{};
   for (std::size_t d = 0; d < 3; ++d) {
     const std::vector<double>& U = p.knots[d];
@@ -26,7 +26,7 @@ TMesh tensor_mesh(const Patch& p, int index) {
       throw bad_input("T-spline: patch " + std::to_string(index) + " has degree " + std::to_string(deg) +
                       " in direction " + std::to_string(d) + " (local refinement is defined for odd degrees)");
   }
-  return TMesh(elements, p.degrees);
+  return TMesh(elements, p.degrees, split_directions);
 }
 
 // B's face rectangles and A's mapped into B's tangent coordinates.
@@ -95,11 +95,11 @@ Eigen::Vector3d box_centre(const Patch& p, const TBox& b) {
 
 }  // namespace
 
-TSplineModel tspline_model(const MultiPatch& mp) {
+TSplineModel tspline_model(const MultiPatch& mp, const std::vector<int>& split_directions) {
   validate_multipatch(mp);
   TSplineModel out;
   out.base = mp;
-  for (std::size_t p = 0; p < mp.patches.size(); ++p) out.meshes.push_back(tensor_mesh(mp.patches[p], static_cast<int>(p)));
+  for (std::size_t p = 0; p < mp.patches.size(); ++p) out.meshes.push_back(tensor_mesh(mp.patches[p], static_cast<int>(p), split_directions));
   return out;
 }
 
@@ -122,7 +122,7 @@ int refine_in_region(TSplineModel& model, const Eigen::AlignedBox3d& region, int
       changed = false;
       for (std::size_t b = 0; b < mesh.boxes().size(); ++b) {
         const TBox& q = mesh.boxes()[b];
-        if (q.level >= 3 * levels || !region.contains(box_centre(model.base.patches[p], q))) continue;
+        if (q.level >= levels * mesh.split_direction_count() || !region.contains(box_centre(model.base.patches[p], q))) continue;
         mesh.refine(static_cast<int>(b));
         changed = true;
       }

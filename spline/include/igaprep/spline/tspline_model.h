@@ -20,10 +20,11 @@ struct TSplineModel {
   std::vector<TMesh> meshes;  // one per patch
 };
 
-// The tensor T-meshes of a model. Throws bad_input for an even degree or an
+// The tensor T-meshes of a model, split across split_directions in turn
+// (TMesh; every patch alike). Throws bad_input for an even degree or an
 // interior knot of multiplicity above 1 (local refinement is defined here
 // for odd degrees on simple knots), or for a model that is not valid.
-TSplineModel tspline_model(const MultiPatch& mp);
+TSplineModel tspline_model(const MultiPatch& mp, const std::vector<int>& split_directions = {0, 1, 2});
 
 // Splits each listed (patch, box) once, each with the closure that keeps its
 // mesh analysis-suitable; then refines the neighbours across interfaces
@@ -33,8 +34,9 @@ void refine_boxes(TSplineModel& model, const std::vector<std::pair<int, int>>& b
 
 // Refines every box whose centre (its parameter midpoint mapped by the
 // geometry) lies in `region` until it is 2^levels times finer than its
-// patch's elements in each direction (level 3 levels), with the closure and
-// the interfaces as refine_boxes. Returns the number of boxes split.
+// patch's elements in each split direction (level levels x their count),
+// with the closure and the interfaces as refine_boxes. Returns the number
+// of boxes split.
 int refine_in_region(TSplineModel& model, const Eigen::AlignedBox3d& region, int levels);
 
 // Boxes over all patches.

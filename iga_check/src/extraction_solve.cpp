@@ -81,9 +81,12 @@ void element_system(const spline::ExtractionModel& m, int element, const Elastic
   std::array<Eigen::VectorXd, 3> w;
   const detail::ExtractionValues v = detail::extraction_values(m, element, gauss_points(e, extra, w));
   const Eigen::Index n = v.R.rows(), nu = w[0].size(), nv = w[1].size();
-  K.setZero(3 * n, 3 * n);
   F.setZero(3 * n);
-  Eigen::MatrixXd G(n, 3), dRt(n, 3);
+  // Per gradient component i the n x nq gradients, plain and times dV:
+  // then every block sum_q dV G_i G_j^T is one matrix product.
+  std::array<Eigen::MatrixXd, 3> Gq, Gw;
+  for (std::size_t i = 0; i < 3; ++i) Gq[i].resize(n, v.R.cols()), Gw[i].resize(n, v.R.cols());
+  Eigen::MatrixXd dRt(n, 3);
   for (Eigen::Index q = 0; q < v.R.cols(); ++q) {
     const Eigen::Matrix3d& J = v.J[static_cast<std::size_t>(q)];
     // Either orientation, as long as it holds over the element.
@@ -92,21 +95,30 @@ void element_system(const spline::ExtractionModel& m, int element, const Elastic
       throw bad_input("elasticity: the Jacobian determinant vanishes or changes sign in element " + std::to_string(element));
     const double dV = std::abs(det) * w[0][q % nu] * w[1][q / nu % nv] * w[2][q / (nu * nv)];
     for (int d = 0; d < 3; ++d) dRt.col(d) = v.dR[static_cast<std::size_t>(d)].col(q);
-    G = dRt * J.inverse();  // physical gradients, n x 3
-    const Eigen::MatrixXd GG = G * G.transpose();
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        Eigen::MatrixXd block = lame.lambda * G.col(i) * G.col(j).transpose() + lame.mu * G.col(j) * G.col(i).transpose();
-        if (i == j) block += lame.mu * GG;
-        for (Eigen::Index a = 0; a < n; ++a)
-          for (Eigen::Index b = 0; b < n; ++b) K(3 * a + i, 3 * b + j) += dV * block(a, b);
-      }
+    const Eigen::MatrixXd G = dRt * J.inverse();  // physical gradients, n x 3
+    for (std::size_t i = 0; i < 3; ++i) {
+      Gq[i].col(q) = G.col(static_cast<Eigen::Index>(i));
+      Gw[i].col(q) = dV * G.col(static_cast<Eigen::Index>(i));
+    }
     Eigen::Vector3d body = problem.body_force;
     const Eigen::Vector3d x = v.x.col(q);
     if (problem.body_force_function) body += problem.body_force_function(x);
     if (problem.rotation) body += problem.rotation->body_force(x);
     for (Eigen::Index a = 0; a < n; ++a) F.segment<3>(3 * a) += dV * v.R(a, q) * body;
   }
+  // K_(3a+i)(3b+j) = lambda A_ij + mu A_ji + mu delta_ij sum_k A_kk, A_ij = sum_q dV G_i G_j^T.
+  std::array<std::array<Eigen::MatrixXd, 3>, 3> A;
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) A[i][j].noalias() = Gw[i] * Gq[j].transpose();
+  const Eigen::MatrixXd trace = A[0][0] + A[1][1] + A[2][2];
+  K.resize(3 * n, 3 * n);
+  for (std::size_t i = 0; i < 3; ++i)
+    for (std::size_t j = 0; j < 3; ++j) {
+      Eigen::MatrixXd block = lame.lambda * A[i][j] + lame.mu * A[j][i];
+      if (i == j) block += lame.mu * trace;
+      for (Eigen::Index b = 0; b < n; ++b)
+        for (Eigen::Index a = 0; a < n; ++a) K(3 * a + static_cast<Eigen::Index>(i), 3 * b + static_cast<Eigen::Index>(j)) = block(a, b);
+    }
 }
 
 struct Constraints {

@@ -133,4 +133,61 @@ TEST(TSplineSolve, CylinderRefinedAtTheBoreNeedsFewerUnknownsThanUniform) {
   EXPECT_LT(local.unknowns, uniform.unknowns);
 }
 
+// u_i = s = sin(pi x) sin(pi y) sin(pi z) for every component i on the unit
+// cube (zero on its sides); b = -div sigma = 3 mu pi^2 s - (lambda + mu) grad(div u).
+struct Manufactured {
+  iga_check::LameParameters lame = iga_check::lame_parameters(1000.0, 0.3);
+  static double s(const Eigen::Vector3d& x) { return std::sin(kPi * x(0)) * std::sin(kPi * x(1)) * std::sin(kPi * x(2)); }
+  Eigen::Vector3d body(const Eigen::Vector3d& x) const {
+    Eigen::Array3d sn, cs;
+    for (int d = 0; d < 3; ++d) sn[d] = std::sin(kPi * x(d)), cs[d] = std::cos(kPi * x(d));
+    Eigen::Vector3d b;
+    for (int i = 0; i < 3; ++i) {
+      double grad_div = -kPi * kPi * s(x);
+      for (int j = 0; j < 3; ++j)
+        if (j != i) grad_div += kPi * kPi * cs[i] * cs[j] * sn[3 - i - j];
+      b[i] = 3 * lame.mu * kPi * kPi * s(x) - (lame.lambda + lame.mu) * grad_div;
+    }
+    return b;
+  }
+};
+
+// The L2 error of the T-spline solution on the unit cube with 2^k elements
+// per direction and the corner x, y, z < 1/2 refined once more (T-junctions).
+double manufactured_l2_error(int k) {
+  MultiPatch mp;
+  mp.patches = {box_patch({0, 0, 0}, {1, 1, 1}, {3, 3, 3}, {1 << k, 1 << k, 1 << k})};
+  mp.materials = {{"steel", 1000.0, 0.3}};
+  label_boundaries(mp, [](const Eigen::Vector3d&) { return std::string("outer"); });
+  spline::TSplineModel t = spline::tspline_model(mp);
+  spline::refine_in_region(t, Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(0.5, 0.5, 0.5)), 1);
+  const spline::ExtractionModel m = spline::extraction_model(t);
+  const Manufactured exact;
+  iga_check::ElasticityProblem problem;
+  problem.fixed = {{"outer"}};
+  problem.body_force_function = [&](const Eigen::Vector3d& x) { return exact.body(x); };
+  const iga_check::ExtractionSolution sol = iga_check::solve_elasticity(m, problem);
+  Eigen::VectorXd g, w;
+  spline::gauss_legendre(5, g, w);
+  double error = 0.0;
+  for (std::size_t e = 0; e < m.elements.size(); ++e) {
+    const auto& dom = m.elements[e].domain;
+    const double volume = (dom[0][1] - dom[0][0]) * (dom[1][1] - dom[1][0]) * (dom[2][1] - dom[2][0]);  // the identity map
+    for (int a = 0; a < 5; ++a)
+      for (int b = 0; b < 5; ++b)
+        for (int c = 0; c < 5; ++c) {
+          const iga_check::ExtractionPointValue v = iga_check::evaluate_solution(m, sol.displacement, static_cast<int>(e), {g[a], g[b], g[c]});
+          error += w[a] * w[b] * w[c] * volume * (v.displacement - Eigen::Vector3d::Constant(Manufactured::s(v.x))).squaredNorm();
+        }
+  }
+  return std::sqrt(error);
+}
+
+TEST(TSplineSolve, ManufacturedSolutionConvergesAtTheOptimalL2Rate) {
+  const double coarse = manufactured_l2_error(2), fine = manufactured_l2_error(3);
+  const double rate = std::log2(coarse / fine);
+  std::printf("L2 error %.3e -> %.3e, rate %.2f\n", coarse, fine, rate);
+  EXPECT_GT(rate, 3.5);  // p + 0.5 for cubics
+}
+
 }  // namespace

@@ -1,15 +1,18 @@
 #include <Eigen/Dense>
-#include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
 #include <unsupported/Eigen/KroneckerProduct>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
+#include <utility>
 #include <numeric>
+#include <unordered_map>
 #include <string>
 
 #include "igaprep/core/error.h"
 #include "igaprep/spline/basis.h"
+#include "igaprep/spline/bezier_extraction.h"
+#include "igaprep/spline/evaluate.h"
 #include "igaprep/spline/tspline_functions.h"
 #include "igaprep/spline/tspline_model.h"
 #include "tspline_common.h"
@@ -17,6 +20,14 @@
 namespace igaprep::spline {
 
 namespace {
+
+struct IntsHash {
+  std::size_t operator()(const std::vector<int>& k) const {
+    std::size_t h = 1469598103934665603ull;
+    for (const int x : k) h = (h ^ static_cast<std::size_t>(x)) * 1099511628211ull;
+    return h;
+  }
+};
 
 // Boehm's insertion of knot x into the spline (K, c) of degree p.
 void insert_knot(std::vector<double>& K, std::vector<double>& c, int p, double x) {
@@ -175,14 +186,120 @@ Eigen::MatrixXd cell_geometry(const PatchContext& ctx, const std::array<std::arr
   return K * values;
 }
 
-struct PatchCells {
-  std::vector<ExtractionElement> elements;
-  std::vector<Eigen::MatrixXd> C;    // per element
-  std::vector<TFunction> functions;  // of the patch
-  Eigen::MatrixXd homogeneous;       // per function (x w, y w, z w, w) from nestedness
+// The 1-D Bernstein vectors of the patch's functions on its cells, each
+// distinct one once: keyed by direction, the function's knots and the
+// cell's interval (index space).
+class Bernstein1dTable {
+ public:
+  explicit Bernstein1dTable(const PatchContext& ctx) : ctx_(ctx) {
+    for (const int p : ctx.patch.degrees)
+      if (p + 2 + 3 > static_cast<int>(Key().size())) throw bad_input("T-spline: degree " + std::to_string(p) + " is above 9");
+  }
+  int id(const TFunction& f, int d, TCoord lo, TCoord hi) {
+    Key key{};
+    const std::vector<TCoord>& k = f.knots[static_cast<std::size_t>(d)];
+    std::copy(k.begin(), k.end(), key.begin());
+    key[k.size()] = lo, key[k.size() + 1] = hi, key[k.size() + 2] = d;
+    const auto [it, added] = ids_.emplace(key, static_cast<int>(vectors_.size()));
+    if (added) vectors_.push_back(bernstein_1d(ctx_, f, d, ctx_.parameter(d, lo), ctx_.parameter(d, hi)));
+    return it->second;
+  }
+  const Eigen::VectorXd& at(int id) const { return vectors_[static_cast<std::size_t>(id)]; }
+  const std::vector<Eigen::VectorXd>& vectors() const { return vectors_; }
+
+ private:
+  using Key = std::array<TCoord, 14>;  // p + 2 knots, the interval, the direction; zeros after
+  struct KeyHash {
+    std::size_t operator()(const Key& k) const {
+      std::size_t h = 1469598103934665603ull;
+      for (const TCoord x : k) h = (h ^ static_cast<std::size_t>(x)) * 1099511628211ull;
+      return h;
+    }
+  };
+  const PatchContext& ctx_;
+  std::unordered_map<Key, int, KeyHash> ids_;
+  std::vector<Eigen::VectorXd> vectors_;
 };
 
-PatchCells patch_cells(const Patch& patch, const TMesh& mesh, int patch_index, double tolerance) {
+struct PatchCells {
+  std::vector<ExtractionElement> elements;      // extraction: index into operator_keys
+  std::vector<std::vector<int>> operator_keys;  // per distinct C_e: its functions' 1-D vectors (u, v, w ids)
+  std::vector<Eigen::VectorXd> vectors_1d;      // those 1-D vectors
+  std::vector<TFunction> functions;         // of the patch
+  Eigen::MatrixXd homogeneous;              // per function (x w, y w, z w, w)
+};
+
+// The coefficients, over the patch's own B-splines in direction d, of the
+// B-spline on the local knots `xi` (parameters): the row of the knot
+// insertion that makes xi consecutive knots of the patch's knot vector
+// (every knot of the patch inside xi's range is one of xi's: the mesh holds
+// every element boundary). Boehm's insertion: convex weights, exact to
+// round-off. Returns (first index, coefficients).
+std::pair<int, std::vector<double>> insertion_row(const std::vector<double>& U, int p, const std::vector<double>& xi) {
+  const int n = static_cast<int>(U.size()) - p - 1;
+  std::vector<double> K = U;
+  std::vector<std::vector<double>> columns(static_cast<std::size_t>(n));
+  for (int j = 0; j < n; ++j) columns[static_cast<std::size_t>(j)].assign(static_cast<std::size_t>(n), 0.0), columns[static_cast<std::size_t>(j)][static_cast<std::size_t>(j)] = 1.0;
+  for (const double x : xi) {
+    const long want = std::count(xi.begin(), xi.end(), x);
+    while (std::count(K.begin(), K.end(), x) < want) {
+      std::vector<double> knots;
+      for (auto& c : columns) {
+        knots = K;
+        insert_knot(knots, c, p, x);
+      }
+      K = std::move(knots);
+    }
+  }
+  const auto at = std::search(K.begin(), K.end(), xi.begin(), xi.end());
+  if (at == K.end()) throw internal_error("T-spline: a function's knots are not consecutive in its patch's refined knots");
+  const std::size_t row = static_cast<std::size_t>(at - K.begin());
+  int first = -1;
+  std::vector<double> alpha;
+  for (int j = 0; j < n; ++j) {
+    const double a = columns[static_cast<std::size_t>(j)][row];
+    if (a == 0.0) continue;
+    if (first < 0) first = j;
+    alpha.resize(static_cast<std::size_t>(j - first) + 1, 0.0);
+    alpha.back() = a;
+  }
+  return {first, alpha};
+}
+
+// Each function's control point (homogeneous) from the patch's: the tensor
+// product of the three insertion rows applied to the patch's control net.
+// The geometry is unchanged: the T-spline space holds the patch's.
+void set_control_points(const PatchContext& ctx, PatchCells& cells) {
+  const Patch& P = ctx.patch;
+  std::array<std::map<std::vector<TCoord>, std::pair<int, std::vector<double>>>, 3> rows;
+  cells.homogeneous.setZero(static_cast<Eigen::Index>(cells.functions.size()), 4);
+  for (std::size_t f = 0; f < cells.functions.size(); ++f) {
+    std::array<const std::pair<int, std::vector<double>>*, 3> r{};
+    for (std::size_t d = 0; d < 3; ++d) {
+      const std::vector<TCoord>& k = cells.functions[f].knots[d];
+      auto it = rows[d].find(k);
+      if (it == rows[d].end()) {
+        std::vector<double> xi;
+        for (const TCoord x : k) xi.push_back(ctx.parameter(static_cast<int>(d), x));
+        it = rows[d].emplace(k, insertion_row(P.knots[d], P.degrees[d], xi)).first;
+      }
+      r[d] = &it->second;
+    }
+    for (std::size_t c = 0; c < r[2]->second.size(); ++c)
+      for (std::size_t b = 0; b < r[1]->second.size(); ++b)
+        for (std::size_t a = 0; a < r[0]->second.size(); ++a) {
+          const int l = P.index(r[0]->first + static_cast<int>(a), r[1]->first + static_cast<int>(b), r[2]->first + static_cast<int>(c));
+          const double alpha = r[0]->second[a] * r[1]->second[b] * r[2]->second[c];
+          const double w = P.rational() ? P.weights[l] : 1.0;
+          cells.homogeneous.row(static_cast<Eigen::Index>(f)).head<3>() += alpha * w * P.control_points.row(l);
+          cells.homogeneous(static_cast<Eigen::Index>(f), 3) += alpha * w;
+        }
+  }
+}
+
+// The cells (Bezier elements) of a refined patch with their functions and
+// C_e, and the functions' control points (set_control_points).
+PatchCells refined_patch_cells(const Patch& patch, const TMesh& mesh, int patch_index) {
   PatchCells out;
   out.functions = tspline_functions(mesh);
   if (const auto bad = dual_compatibility_violation(mesh, out.functions))
@@ -190,9 +307,8 @@ PatchCells patch_cells(const Patch& patch, const TMesh& mesh, int patch_index, d
                          std::to_string(bad->first) + " and " + std::to_string(bad->second) + ")");
   const PatchContext ctx(patch, mesh);
   const std::vector<std::vector<int>> by_element = functions_by_element(mesh, out.functions);
-  std::vector<Eigen::Triplet<double>> normal;
-  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(out.functions.size()), 4);
-  std::vector<Eigen::MatrixXd> geometry;
+  Bernstein1dTable table(ctx);
+  std::unordered_map<std::vector<int>, int, IntsHash> operator_ids;
   for (const TBox& q : mesh.boxes()) {
     std::vector<int> on_box;
     for (const int f : by_element[static_cast<std::size_t>(q.element)])
@@ -206,46 +322,108 @@ PatchCells patch_cells(const Patch& patch, const TMesh& mesh, int patch_index, d
         e.index[static_cast<std::size_t>(d)] = static_cast<int>(cell.lo[static_cast<std::size_t>(d)] / kTScale);
         e.domain[static_cast<std::size_t>(d)] = {{ctx.parameter(d, cell.lo[static_cast<std::size_t>(d)]), ctx.parameter(d, cell.hi[static_cast<std::size_t>(d)])}};
       }
-      std::vector<Eigen::VectorXd> rows;
+      std::vector<int> key;
       for (const int f : on_box) {
         const TFunction& fn = out.functions[static_cast<std::size_t>(f)];
         if (!meets(fn, mesh, cell.lo, cell.hi)) continue;
-        Eigen::VectorXd b[3];
-        for (int d = 0; d < 3; ++d) b[d] = bernstein_1d(ctx, fn, d, e.domain[static_cast<std::size_t>(d)][0], e.domain[static_cast<std::size_t>(d)][1]);
-        rows.push_back(Eigen::kroneckerProduct(b[2], Eigen::kroneckerProduct(b[1], b[0]).eval()).eval());
+        for (int d = 0; d < 3; ++d) key.push_back(table.id(fn, d, cell.lo[static_cast<std::size_t>(d)], cell.hi[static_cast<std::size_t>(d)]));
         e.functions.push_back(f);
       }
-      Eigen::MatrixXd C(static_cast<Eigen::Index>(rows.size()), rows.empty() ? 0 : rows[0].size());
-      for (std::size_t r = 0; r < rows.size(); ++r) C.row(static_cast<Eigen::Index>(r)) = rows[r].transpose();
-      const Eigen::MatrixXd G = cell_geometry(ctx, e.domain);
-      const Eigen::MatrixXd CCt = C * C.transpose(), CG = C * G;
-      for (std::size_t r = 0; r < e.functions.size(); ++r) {
-        rhs.row(e.functions[r]) += CG.row(static_cast<Eigen::Index>(r));
-        for (std::size_t s = 0; s < e.functions.size(); ++s)
-          normal.emplace_back(e.functions[r], e.functions[s], CCt(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(s)));
+      auto it = operator_ids.find(key);
+      if (it == operator_ids.end()) {
+        it = operator_ids.emplace(key, static_cast<int>(out.operator_keys.size())).first;
+        out.operator_keys.push_back(std::move(key));
       }
+      e.extraction = it->second;
       out.elements.push_back(std::move(e));
-      out.C.push_back(std::move(C));
-      geometry.push_back(G);
     }
   }
-  Eigen::SparseMatrix<double> A(static_cast<Eigen::Index>(out.functions.size()), static_cast<Eigen::Index>(out.functions.size()));
-  A.setFromTriplets(normal.begin(), normal.end());
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
-  if (solver.info() != Eigen::Success) throw internal_error("T-spline: the functions of patch " + std::to_string(patch_index) + " are not independent");
-  out.homogeneous = solver.solve(rhs);
-  // Nestedness: the old geometry must come back exactly on every cell.
-  for (std::size_t c = 0; c < out.elements.size(); ++c) {
-    Eigen::MatrixXd H(static_cast<Eigen::Index>(out.elements[c].functions.size()), 4);
-    for (std::size_t r = 0; r < out.elements[c].functions.size(); ++r) H.row(static_cast<Eigen::Index>(r)) = out.homogeneous.row(out.elements[c].functions[r]);
-    const double off = (out.C[c].transpose() * H - geometry[c]).cwiseAbs().maxCoeff();
-    if (!(off <= tolerance))
-      throw internal_error("T-spline: patch " + std::to_string(patch_index) + " does not reproduce its geometry (off by " +
-                           std::to_string(off) + ")");
+  out.vectors_1d = table.vectors();
+  set_control_points(ctx, out);
+  return out;
+}
+
+// An unrefined patch: its own elements, B-splines (the functions in the
+// same order: tspline_functions) and control points; the rows of its 1-D
+// extraction operators are the 1-D vectors.
+PatchCells tensor_patch_cells(const Patch& patch, const TMesh& mesh, int patch_index) {
+  PatchCells out;
+  out.functions = tspline_functions(mesh);
+  if (static_cast<Eigen::Index>(out.functions.size()) != patch.control_points.rows())
+    throw internal_error("T-spline: the tensor mesh of patch " + std::to_string(patch_index) + " has another function count");
+  const PatchExtraction ex = bezier_extraction(patch);
+  std::array<std::vector<int>, 3> first_row;  // per direction and element: the id of its first row
+  for (std::size_t d = 0; d < 3; ++d)
+    for (const Eigen::MatrixXd& C : ex.dirs[d].C) {
+      first_row[d].push_back(static_cast<int>(out.vectors_1d.size()));
+      for (Eigen::Index r = 0; r < C.rows(); ++r) out.vectors_1d.push_back(C.row(r).transpose());
+    }
+  std::map<std::array<int, 3>, int> operator_ids;
+  for (int ew = 0; ew < ex.element_count(2); ++ew)
+    for (int ev = 0; ev < ex.element_count(1); ++ev)
+      for (int eu = 0; eu < ex.element_count(0); ++eu) {
+        ExtractionElement e;
+        e.degrees = patch.degrees;
+        e.material = patch.material;
+        e.patch = patch_index;
+        e.index = {{eu, ev, ew}};
+        const int at[3] = {eu, ev, ew};
+        for (std::size_t d = 0; d < 3; ++d)
+          e.domain[d] = {{ex.dirs[d].breaks[static_cast<std::size_t>(at[d])], ex.dirs[d].breaks[static_cast<std::size_t>(at[d]) + 1]}};
+        e.functions = element_control_points(patch, ex, eu, ev, ew);
+        const std::array<int, 3> key{{first_row[0][static_cast<std::size_t>(eu)], first_row[1][static_cast<std::size_t>(ev)],
+                                      first_row[2][static_cast<std::size_t>(ew)]}};
+        const auto [it, added] = operator_ids.emplace(key, static_cast<int>(out.operator_keys.size()));
+        if (added) {
+          std::vector<int> rows;
+          for (int k = 0; k <= patch.degrees[2]; ++k)
+            for (int j = 0; j <= patch.degrees[1]; ++j)
+              for (int i = 0; i <= patch.degrees[0]; ++i) rows.insert(rows.end(), {key[0] + i, key[1] + j, key[2] + k});
+          out.operator_keys.push_back(std::move(rows));
+        }
+        e.extraction = it->second;
+        out.elements.push_back(std::move(e));
+      }
+  out.homogeneous.resize(patch.control_points.rows(), 4);
+  for (Eigen::Index l = 0; l < patch.control_points.rows(); ++l) {
+    const double w = patch.rational() ? patch.weights[l] : 1.0;
+    out.homogeneous.row(l) << w * patch.control_points.row(l), w;
   }
   return out;
 }
 
+PatchCells patch_cells(const Patch& patch, const TMesh& mesh, int patch_index) {
+  const bool tensor = static_cast<int>(mesh.boxes().size()) == mesh.elements()[0] * mesh.elements()[1] * mesh.elements()[2];
+  return tensor ? tensor_patch_cells(patch, mesh, patch_index) : refined_patch_cells(patch, mesh, patch_index);
+}
+
+// Nestedness, checked at every cell's centre: the patch's old geometry
+// comes back (the tests check it at random points).
+void check_reproduces_geometry(const Patch& patch, const PatchCells& cells, int patch_index, double tolerance) {
+  for (const ExtractionElement& e : cells.elements) {
+    std::array<Eigen::VectorXd, 3> B;
+    for (std::size_t d = 0; d < 3; ++d) {
+      B[d].resize(e.degrees[d] + 1);
+      bernstein_basis(e.degrees[d], 0.5, B[d].data());
+    }
+    const std::vector<int>& key = cells.operator_keys[static_cast<std::size_t>(e.extraction)];
+    Eigen::RowVector4d h = Eigen::RowVector4d::Zero();
+    for (std::size_t r = 0; r < e.functions.size(); ++r) {
+      double N = 1.0;
+      for (std::size_t d = 0; d < 3; ++d) N *= B[d].dot(cells.vectors_1d[static_cast<std::size_t>(key[3 * r + d])]);
+      h += N * cells.homogeneous.row(e.functions[r]);
+    }
+    Eigen::Vector3d u;
+    for (int d = 0; d < 3; ++d) u[d] = 0.5 * (e.domain[static_cast<std::size_t>(d)][0] + e.domain[static_cast<std::size_t>(d)][1]);
+    const double off = (h.head<3>().transpose() / h[3] - evaluate_point(patch, u)).cwiseAbs().maxCoeff();
+    if (!(off <= tolerance)) {
+      char text[160];
+      std::snprintf(text, sizeof text, "T-spline: patch %d does not reproduce its geometry (off by %.3g, tolerance %.3g)", patch_index, off,
+                    tolerance);
+      throw internal_error(text);
+    }
+  }
+}
 
 // Union-find over (patch, function) with patch offsets.
 struct FunctionClasses {
@@ -309,15 +487,45 @@ double model_scale(const MultiPatch& mp) {
   return s;
 }
 
-// Operators keyed by their entries (rounded to 1e-13): elements with the
-// same knot pattern share one.
-int operator_id(std::map<std::vector<long long>, int>& ids, std::vector<Eigen::MatrixXd>& operators, const Eigen::MatrixXd& C) {
-  std::vector<long long> key{C.rows(), C.cols()};
-  for (Eigen::Index i = 0; i < C.size(); ++i) key.push_back(std::llround(C.data()[i] * 1e13));
-  const auto [it, added] = ids.emplace(std::move(key), static_cast<int>(operators.size()));
-  if (added) operators.push_back(C);
-  return it->second;
+// C_e from its functions' 1-D vectors: row r = w (x) v (x) u.
+Eigen::MatrixXd operator_matrix(const PatchCells& cells, const std::vector<int>& key) {
+  const Eigen::Index n = static_cast<Eigen::Index>(key.size() / 3);
+  auto v = [&](Eigen::Index r, int d) -> const Eigen::VectorXd& { return cells.vectors_1d[static_cast<std::size_t>(key[static_cast<std::size_t>(3 * r + d)])]; };
+  Eigen::MatrixXd C(n, v(0, 0).size() * v(0, 1).size() * v(0, 2).size());
+  for (Eigen::Index r = 0; r < n; ++r) C.row(r) = Eigen::kroneckerProduct(v(r, 2), Eigen::kroneckerProduct(v(r, 1), v(r, 0)).eval()).transpose();
+  return C;
 }
+
+// Operators shared across patches: each patch's 1-D vectors get global ids
+// by their entries (rounded to 1e-13), and an operator is keyed by the
+// global ids of its functions' vectors.
+class GlobalOperators {
+ public:
+  explicit GlobalOperators(std::vector<Eigen::MatrixXd>& operators) : operators_(operators) {}
+  // Global operator ids of a patch's operators.
+  std::vector<int> add(const PatchCells& cells) {
+    std::vector<int> global_1d;
+    for (const Eigen::VectorXd& v : cells.vectors_1d) {
+      std::vector<long long> key;
+      for (Eigen::Index i = 0; i < v.size(); ++i) key.push_back(std::llround(v[i] * 1e13));
+      global_1d.push_back(ids_1d_.emplace(std::move(key), static_cast<int>(ids_1d_.size())).first->second);
+    }
+    std::vector<int> out;
+    for (const std::vector<int>& local : cells.operator_keys) {
+      std::vector<int> key;
+      for (const int id : local) key.push_back(global_1d[static_cast<std::size_t>(id)]);
+      const auto [it, added] = ids_.emplace(std::move(key), static_cast<int>(operators_.size()));
+      if (added) operators_.push_back(operator_matrix(cells, local));
+      out.push_back(it->second);
+    }
+    return out;
+  }
+
+ private:
+  std::vector<Eigen::MatrixXd>& operators_;
+  std::map<std::vector<long long>, int> ids_1d_;
+  std::unordered_map<std::vector<int>, int, IntsHash> ids_;
+};
 
 void add_boundary_faces(const TSplineModel& m, int patch, int first_element, const PatchCells& cells, ExtractionModel& out) {
   const Patch& P = m.base.patches[static_cast<std::size_t>(patch)];
@@ -339,7 +547,8 @@ ExtractionModel extraction_model(const TSplineModel& model) {
   std::vector<int> offset;
   int total = 0;
   for (std::size_t p = 0; p < mp.patches.size(); ++p) {
-    cells.push_back(patch_cells(mp.patches[p], model.meshes[p], static_cast<int>(p), 1e-10 * scale));
+    cells.push_back(patch_cells(mp.patches[p], model.meshes[p], static_cast<int>(p)));
+    check_reproduces_geometry(mp.patches[p], cells.back(), static_cast<int>(p), 1e-10 * scale);
     offset.push_back(total);
     total += static_cast<int>(cells.back().functions.size());
   }
@@ -372,13 +581,14 @@ ExtractionModel extraction_model(const TSplineModel& model) {
   bool rational = false;
   for (const Patch& p : mp.patches) rational = rational || p.rational();
   if (!rational) out.weights.setOnes();
-  std::map<std::vector<long long>, int> ids;
+  GlobalOperators operators(out.operators);
   for (std::size_t p = 0; p < cells.size(); ++p) {
+    const std::vector<int> global_operator = operators.add(cells[p]);
     const int first = static_cast<int>(out.elements.size());
-    for (std::size_t e = 0; e < cells[p].elements.size(); ++e) {
-      ExtractionElement el = cells[p].elements[e];
+    for (const ExtractionElement& e : cells[p].elements) {
+      ExtractionElement el = e;
       for (int& f : el.functions) f = global[static_cast<std::size_t>(offset[p] + f)];
-      el.extraction = operator_id(ids, out.operators, cells[p].C[e]);
+      el.extraction = global_operator[static_cast<std::size_t>(e.extraction)];
       out.elements.push_back(std::move(el));
     }
     add_boundary_faces(model, static_cast<int>(p), first, cells[p], out);

@@ -110,20 +110,24 @@ bool knot_vectors_overlap(const std::vector<TCoord>& a, const std::vector<TCoord
 
 std::optional<std::pair<int, int>> dual_compatibility_violation(const TMesh& mesh,
                                                                 const std::vector<TFunction>& functions) {
+  // Supports as flat rows (lo u, hi u, lo v, hi v, lo w, hi w), swept in u.
+  std::vector<std::array<TCoord, 6>> support(functions.size());
+  for (std::size_t f = 0; f < functions.size(); ++f)
+    for (int d = 0; d < 3; ++d) {
+      support[f][static_cast<std::size_t>(2 * d)] = functions[f].support_lo(d);
+      support[f][static_cast<std::size_t>(2 * d + 1)] = functions[f].support_hi(d, mesh);
+    }
   std::vector<int> order(functions.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    return functions[static_cast<std::size_t>(a)].support_lo(0) < functions[static_cast<std::size_t>(b)].support_lo(0);
-  });
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return support[static_cast<std::size_t>(a)][0] < support[static_cast<std::size_t>(b)][0]; });
   for (std::size_t x = 0; x < order.size(); ++x) {
-    const TFunction& f = functions[static_cast<std::size_t>(order[x])];
+    const std::array<TCoord, 6>& sf = support[static_cast<std::size_t>(order[x])];
     for (std::size_t y = x + 1; y < order.size(); ++y) {
+      const std::array<TCoord, 6>& sg = support[static_cast<std::size_t>(order[y])];
+      if (sg[0] >= sf[1]) break;
+      if (!(sg[2] < sf[3] && sf[2] < sg[3] && sg[4] < sf[5] && sf[4] < sg[5])) continue;
+      const TFunction& f = functions[static_cast<std::size_t>(order[x])];
       const TFunction& g = functions[static_cast<std::size_t>(order[y])];
-      if (g.support_lo(0) >= f.support_hi(0, mesh)) break;
-      bool supports_meet = true;
-      for (int d = 1; d < 3 && supports_meet; ++d)
-        supports_meet = g.support_lo(d) < f.support_hi(d, mesh) && f.support_lo(d) < g.support_hi(d, mesh);
-      if (!supports_meet) continue;
       bool partial = false;
       for (std::size_t d = 0; d < 3 && !partial; ++d)
         partial = f.knots[d] != g.knots[d] && knot_vectors_overlap(f.knots[d], g.knots[d]);

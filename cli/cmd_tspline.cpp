@@ -36,14 +36,12 @@ Eigen::AlignedBox3d parse_box(const std::string& s) {
   return Eigen::AlignedBox3d(lo, hi);
 }
 
-spline::ExtractionModel refined_model(const spline::MultiPatch& mp, const TsplineArgs& a) {
-  std::vector<Eigen::AlignedBox3d> boxes;
-  for (const std::string& s : a.boxes) boxes.push_back(parse_box(s));
+spline::ExtractionModel refined_model(const spline::MultiPatch& mp, const std::vector<Eigen::AlignedBox3d>& boxes, int levels) {
   if (boxes.empty()) return spline::extraction_model(mp);
   spline::TSplineModel t = spline::tspline_model(mp);
   const long before = spline::tmesh_box_count(t);
   int split = 0;
-  for (const Eigen::AlignedBox3d& box : boxes) split += spline::refine_in_region(t, box, a.levels);
+  for (const Eigen::AlignedBox3d& box : boxes) split += spline::refine_in_region(t, box, levels);
   std::cout << "refine: " << split << " splits (" << before << " -> " << spline::tmesh_box_count(t)
             << " boxes), analysis-suitable\n";
   return spline::extraction_model(t);
@@ -62,9 +60,11 @@ void add_tspline_command(CLI::App& app) {
   sub->add_option("--levels", a->levels, "with --refine-box: times each element is halved in every direction")
       ->check(CLI::Range(1, 6));
   set_body(sub, [a] {
+    std::vector<Eigen::AlignedBox3d> boxes;
+    for (const std::string& s : a->boxes) boxes.push_back(parse_box(s));
     refuse_replacing_inputs({a->model}, {a->output});
     const spline::MultiPatch mp = exporter::read_hdf5_model(a->model);
-    const spline::ExtractionModel m = refined_model(mp, *a);
+    const spline::ExtractionModel m = refined_model(mp, boxes, a->levels);
     exporter::write_hdf5_extraction(m, a->output);
     std::cout << "tspline: " << m.function_count() << " functions, " << m.elements.size() << " elements, "
               << m.boundary_faces.size() << " labelled element faces\n"

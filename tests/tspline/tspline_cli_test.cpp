@@ -1,0 +1,98 @@
+// The T-spline command on a model a run made (issue 18): sphere2 from
+// `igaprep run` refined locally by `igaprep tspline --refine-box`; the file
+// read back by the independent evaluator (tests/export/eval_extraction.py,
+// written from docs/hdf5-format.md) reproduces the multipatch's geometry,
+// `igaprep check` certifies every Bezier element, and VTK reads its VTU.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+
+#include "export/test_util.h"
+#include "igaprep/export/hdf5_extraction.h"
+#include "igaprep/export/hdf5_model.h"
+#include "igaprep/spline/evaluate.h"
+
+namespace {
+using namespace igaprep;
+using namespace igaprep::test;
+
+std::string cli(const std::string& args) { return std::string(IGAPREP_CLI) + " " + args + " 2>&1"; }
+
+TEST(TSplineCli, RefinedSphere2IsReadBackCertifiedAndViewable) {
+  const std::string dir = scratch_dir("tspline_sphere2");
+  const std::string models = std::string(IGAPREP_SOURCE_DIR) + "/models/sphere2/";
+  std::ofstream(dir + "/case.json") << R"({"name": "sphere2", "surfaces": [{"file": ")" << models
+                                    << R"(outer.off", "label": "outer"}, {"file": ")" << models
+                                    << R"(inner.off", "label": "inner"}], "materials": [{"name": "shell", "young_modulus": 1000, "poisson_ratio": 0.3}, {"name": "core", "young_modulus": 100, "poisson_ratio": 0.25}], "validation": {"enabled": false}})";
+  ASSERT_EQ(run_command(cli("run " + dir + "/case.json -o " + dir + "/run")).status, 0);
+  // The elements with centres at z > 0.3: a cap of the sphere, T-junctions around it.
+  const CommandResult r = run_command(cli("tspline " + dir + "/run/model.h5 --refine-box -9,-9,0.3,9,9,9 --levels 1 -o " + dir + "/t.h5"));
+  ASSERT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("analysis-suitable"), std::string::npos) << r.output;
+  const spline::MultiPatch mp = exporter::read_hdf5_model(dir + "/run/model.h5");
+  const spline::ExtractionModel t = exporter::read_hdf5_extraction(dir + "/t.h5");
+  long tensor_elements = 0;
+  for (const spline::Patch& p : mp.patches) {
+    long n = 1;
+    for (int d = 0; d < 3; ++d) n *= static_cast<long>(p.knots[static_cast<std::size_t>(d)].size()) - 2 * p.degrees[static_cast<std::size_t>(d)] - 1;
+    tensor_elements += n;
+  }
+  EXPECT_GT(static_cast<long>(t.elements.size()), tensor_elements);
+  // 500 random points: the independent evaluator against the multipatch.
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::uniform_int_distribution<int> pick(0, static_cast<int>(t.elements.size()) - 1);
+  std::ostringstream points;
+  std::vector<Eigen::Vector3d> expected;
+  points.precision(17);
+  points << "[";
+  for (int s = 0; s < 500; ++s) {
+    const int e = pick(rng);
+    const Eigen::Vector3d tp(unit(rng), unit(rng), unit(rng));
+    const spline::ExtractionElement& el = t.elements[static_cast<std::size_t>(e)];
+    Eigen::Vector3d xi;
+    for (int d = 0; d < 3; ++d) xi[d] = el.domain[static_cast<std::size_t>(d)][0] + tp[d] * (el.domain[static_cast<std::size_t>(d)][1] - el.domain[static_cast<std::size_t>(d)][0]);
+    expected.push_back(spline::evaluate_point(mp.patches[static_cast<std::size_t>(el.patch)], xi));
+    points << (s ? "," : "") << "[" << e << "," << tp[0] << "," << tp[1] << "," << tp[2] << "]";
+  }
+  points << "]";
+  std::ofstream(dir + "/points.json") << points.str();
+  const CommandResult py = run_python("eval_extraction.py", {dir + "/t.h5", points.str()});
+  ASSERT_EQ(py.status, 0) << py.output.substr(0, 2000);
+  const nlohmann::json j = nlohmann::json::parse(py.output);
+  EXPECT_EQ(j["functions"].get<int>(), t.function_count());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < expected.size(); ++i)
+    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(j["points"][i][static_cast<std::size_t>(c)].get<double>() - expected[i][c]));
+  EXPECT_LT(worst, 1e-12 * 2.0);  // the sphere's diagonal is about 2 * sqrt(3)
+  // The check certifies every Bezier element of the refined model.
+  const CommandResult check = run_command(cli("check " + dir + "/t.h5 --report " + dir + "/report"));
+  EXPECT_EQ(WEXITSTATUS(check.status), 0) << check.output;
+  EXPECT_NE(check.output.find("PASS: jacobian: all " + std::to_string(t.elements.size()) + " Bezier elements certified"), std::string::npos)
+      << check.output;
+  // VTK reads as many cells as there are Bezier elements.
+  ASSERT_EQ(run_command(cli("export " + dir + "/t.h5 --to vtu -o " + dir + "/t")).status, 0);
+  const CommandResult vtk = run_command(std::string(IGAPREP_PYTHON) + " -c \"import vtk; r = vtk.vtkXMLUnstructuredGridReader(); r.SetFileName('" +
+                                        dir + "/t.vtu'); r.Update(); print(r.GetOutput().GetNumberOfCells())\"");
+  ASSERT_EQ(vtk.status, 0) << vtk.output;
+  EXPECT_EQ(std::stol(vtk.output), static_cast<long>(t.elements.size()));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(TSplineCli, BadRefineBoxesAreRefused) {
+  const std::string dir = scratch_dir("tspline_bad");
+  for (const std::string box : {"1,2,3", "0,0,0,1,1,x", "1,0,0,0,1,1"}) {
+    const CommandResult r = run_command(cli("tspline " + dir + "/missing.h5 --refine-box " + box + " -o " + dir + "/t.h5"));
+    EXPECT_EQ(WEXITSTATUS(r.status), 1) << box << ": " << r.output;
+    EXPECT_NE(r.output.find("error: --refine-box"), std::string::npos) << r.output;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace

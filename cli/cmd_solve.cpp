@@ -4,7 +4,9 @@
 // [--refine N] [--elevate K] [--solver cholesky|cg]: linear elasticity on the
 // model (docs/elasticity-solver.md); RESULT.h5 is the refined model plus the
 // displacement per patch and the root attributes strain_energy and
-// max_displacement. Bad input: error, exit 1, nothing written.
+// max_displacement. A T-spline model (igaprep-bezier-extraction) is solved
+// through its extraction operators and written back in its own format with
+// the displacement per function. Bad input: error, exit 1, nothing written.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -16,8 +18,10 @@
 #include "igaprep/core/atomic_file.h"
 #include "igaprep/core/input_files.h"
 #include "igaprep/core/error.h"
+#include "igaprep/export/hdf5_extraction.h"
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/iga_check/elasticity_solve.h"
+#include "igaprep/iga_check/extraction_solve.h"
 
 namespace igaprep::cli {
 
@@ -107,17 +111,32 @@ int run_solve(const SolveArgs& a) {
   if (problem.fixed.empty())
     throw bad_input("no constraints: give --fix LABEL[:COMPONENTS] so that no rigid-body motion is left free");
 
-  const spline::MultiPatch model = exporter::read_hdf5_model(a.model);
+  const bool extraction = exporter::is_hdf5_extraction(a.model);
+  if (extraction && (a.refine != 0 || a.elevate != 0))
+    throw bad_input("--refine and --elevate are for multipatch models; refine a T-spline with igaprep tspline --refine-box");
   // The output's folder is made and tried before the solve, not after it.
   create_output_folder(std::filesystem::path(a.output).parent_path().string().empty()
                            ? "."
                            : std::filesystem::path(a.output).parent_path().string());
   AtomicPath output(a.output);
-  const iga_check::ElasticitySolution sol = iga_check::solve_elasticity(model, problem, options);
-  exporter::write_hdf5_model(sol.model, output);
-  output.commit();
+  iga_check::ElasticityReport r;
+  if (extraction) {
+    // A T-spline (Bezier-extraction form): solved through its C_e, written back with the displacement per function.
+    spline::ExtractionModel model = exporter::read_hdf5_extraction(a.model);
+    const iga_check::ExtractionSolution sol = iga_check::solve_elasticity(model, problem, options);
+    model.displacement = sol.displacement;
+    model.has_solution = true;
+    model.strain_energy = sol.report.strain_energy;
+    model.max_displacement = sol.report.max_displacement;
+    exporter::write_hdf5_extraction(model, a.output);  // atomic itself; `output` only tried the folder
+    r = sol.report;
+  } else {
+    const iga_check::ElasticitySolution sol = iga_check::solve_elasticity(exporter::read_hdf5_model(a.model), problem, options);
+    exporter::write_hdf5_model(sol.model, output);
+    output.commit();
+    r = sol.report;
+  }
 
-  const auto& r = sol.report;
   std::printf("solve: %lld unknowns (%lld fixed), %lld non-zeros, %lld elements, %lld quadrature points\n",
               r.unknowns, r.fixed_dofs, r.nonzeros, r.elements, r.quadrature_points);
   std::printf("solve: assembly %.3f s, solve %.3f s (%s%s)\n", r.assembly_seconds, r.solve_seconds, r.solver.c_str(),
@@ -133,7 +152,7 @@ void add_solve_command(CLI::App& app) {
   auto* sub = app.add_subcommand("solve", "Linear-elasticity IGA solve of a model (docs/elasticity-solver.md)");
   auto args = std::make_shared<SolveArgs>();
   sub->add_option("model", args->model, "Model file (HDF5, docs/hdf5-format.md)")->required()->check(CLI::ExistingFile);
-  sub->add_option("-o,--output", args->output, "Result file: the refined model with displacement (HDF5)")->required();
+  sub->add_option("-o,--output", args->output, "Result file: the refined model with displacement (HDF5; a T-spline stays a T-spline)")->required();
   sub->add_option("--fix", args->fix, "Zero displacement on a labelled boundary: LABEL[:COMPONENTS], e.g. base:xyz, sym:x")
       ->allow_extra_args(false);
   sub->add_option("--pressure", args->pressure, "Pressure on a labelled boundary: LABEL=P (positive pushes in)")

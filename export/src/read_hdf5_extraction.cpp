@@ -125,6 +125,18 @@ spline::ExtractionModel read_model(const Reader& r) {
     m.weights[static_cast<Eigen::Index>(i)] = w[i];
     for (int c = 0; c < 3; ++c) m.control_points(static_cast<Eigen::Index>(i), c) = cp[3 * i + static_cast<std::size_t>(c)];
   }
+  if (r.has_link(r.root(), "displacement")) {
+    const std::vector<double> u = doubles(r, r.root(), "displacement", "/displacement", {cp.size() / 3, 3});
+    m.displacement = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(u.data(), static_cast<Eigen::Index>(u.size() / 3), 3);
+  }
+  if (r.has_attribute(r.root(), "strain_energy") != r.has_attribute(r.root(), "max_displacement"))
+    r.bad(r.has_attribute(r.root(), "strain_energy") ? "attribute /max_displacement" : "attribute /strain_energy",
+          "missing (a solve result has both strain_energy and max_displacement)");
+  if (r.has_attribute(r.root(), "strain_energy")) {
+    m.has_solution = true;
+    m.strain_energy = r.double_scalar(r.root(), "strain_energy", "/strain_energy");
+    m.max_displacement = r.double_scalar(r.root(), "max_displacement", "/max_displacement");
+  }
   read_operators(r, m);
   read_elements(r, m);
   const std::vector<long long> faces = ints(r, r.root(), "boundary_faces", "/boundary_faces", {0, 3});

@@ -29,6 +29,8 @@ void check_extraction_model(const spline::ExtractionModel& m, const std::string&
     if (el.material < 0 || el.material >= static_cast<int>(m.materials.size()))
       fail("element " + std::to_string(e) + " has no material " + std::to_string(el.material));
   }
+  if (m.displacement.size() > 0 && (m.displacement.rows() != m.function_count() || m.displacement.cols() != 3))
+    fail("the displacement is not one (ux, uy, uz) per function");
   for (const spline::ExtractionBoundaryFace& f : m.boundary_faces)
     if (f.element < 0 || f.element >= static_cast<int>(m.elements.size()) || !f.side.valid() || f.label < 0 ||
         f.label >= static_cast<int>(m.labels.size()))
@@ -101,6 +103,15 @@ void write_file(const spline::ExtractionModel& m, const std::string& path, const
                   {static_cast<hsize_t>(m.control_points.rows()), 3}, cp.data());
   w.write_dataset(root, "weights", "dataset /weights", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
                   {static_cast<hsize_t>(m.weights.size())}, m.weights.data());
+  if (m.displacement.size() > 0) {
+    const std::vector<double> u = detail::row_major(m.displacement);
+    w.write_dataset(root, "displacement", "dataset /displacement", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
+                    {static_cast<hsize_t>(m.displacement.rows()), 3}, u.data());
+  }
+  if (m.has_solution) {
+    w.double_attribute(root, "strain_energy", "attribute /strain_energy", m.strain_energy);
+    w.double_attribute(root, "max_displacement", "attribute /max_displacement", m.max_displacement);
+  }
   write_elements(w, root, m);
   write_operators(w, root, m);
   std::vector<int> faces;

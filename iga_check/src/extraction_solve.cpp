@@ -11,6 +11,7 @@
 #include <string>
 
 #include "elasticity_linear_solve.h"
+#include "extraction_pattern.h"
 #include "extraction_values.h"
 #include "igaprep/core/error.h"
 #include "igaprep/iga_check/elasticity_material.h"
@@ -106,18 +107,21 @@ void element_system(const spline::ExtractionModel& m, int element, const Elastic
     if (problem.rotation) body += problem.rotation->body_force(x);
     for (Eigen::Index a = 0; a < n; ++a) F.segment<3>(3 * a) += dV * v.R(a, q) * body;
   }
-  // K_(3a+i)(3b+j) = lambda A_ij + mu A_ji + mu delta_ij sum_k A_kk, A_ij = sum_q dV G_i G_j^T.
+  // K_(3a+i)(3b+j) = lambda A_ij + mu A_ji + mu delta_ij sum_k A_kk, A_ij = sum_q dV G_i G_j^T
+  // (A_ji = A_ij^T: six products).
   std::array<std::array<Eigen::MatrixXd, 3>, 3> A;
   for (std::size_t i = 0; i < 3; ++i)
-    for (std::size_t j = 0; j < 3; ++j) A[i][j].noalias() = Gw[i] * Gq[j].transpose();
+    for (std::size_t j = i; j < 3; ++j) A[i][j].noalias() = Gw[i] * Gq[j].transpose();
   const Eigen::MatrixXd trace = A[0][0] + A[1][1] + A[2][2];
   K.resize(3 * n, 3 * n);
   for (std::size_t i = 0; i < 3; ++i)
     for (std::size_t j = 0; j < 3; ++j) {
-      Eigen::MatrixXd block = lame.lambda * A[i][j] + lame.mu * A[j][i];
-      if (i == j) block += lame.mu * trace;
+      const Eigen::Index ii = static_cast<Eigen::Index>(i), jj = static_cast<Eigen::Index>(j);
       for (Eigen::Index b = 0; b < n; ++b)
-        for (Eigen::Index a = 0; a < n; ++a) K(3 * a + static_cast<Eigen::Index>(i), 3 * b + static_cast<Eigen::Index>(j)) = block(a, b);
+        for (Eigen::Index a = 0; a < n; ++a) {
+          const double aij = i <= j ? A[i][j](a, b) : A[j][i](b, a), aji = j <= i ? A[j][i](a, b) : A[i][j](b, a);
+          K(3 * a + ii, 3 * b + jj) = lame.lambda * aij + lame.mu * aji + (i == j ? lame.mu * trace(a, b) : 0.0);
+        }
     }
 }
 
@@ -235,58 +239,55 @@ ExtractionSolution solve_elasticity(const spline::ExtractionModel& model, const 
   const int extra = options.extra_quadrature;
   const Eigen::Index dofs = 3 * model.function_count();
   const Constraints c = constraints(model, problem, extra);
-  std::vector<int> equation(static_cast<std::size_t>(dofs), -1);
   ExtractionSolution out;
   for (Eigen::Index i = 0; i < dofs; ++i)
-    if (!c.set[static_cast<std::size_t>(i)]) equation[static_cast<std::size_t>(i)] = static_cast<int>(out.report.unknowns++);
+    if (!c.set[static_cast<std::size_t>(i)]) ++out.report.unknowns;
   out.report.fixed_dofs = dofs - out.report.unknowns;
-  Triplets lower;
-  Eigen::VectorXd F_all = Eigen::VectorXd::Zero(dofs);
+  detail::BlockLowerMatrix assembled(model);
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(dofs);
   Eigen::MatrixXd Ke;
   Eigen::VectorXd Fe;
   for (std::size_t e = 0; e < model.elements.size(); ++e) {
     const spline::ExtractionElement& el = model.elements[e];
     const spline::Material& mat = model.materials.at(static_cast<std::size_t>(el.material));
     element_system(model, static_cast<int>(e), problem, lame_parameters(mat.young_modulus, mat.poisson_ratio, mat.name), extra, Ke, Fe);
-    for (Eigen::Index a = 0; a < Ke.rows(); ++a) {
-      const Eigen::Index ga = 3 * el.functions[static_cast<std::size_t>(a / 3)] + a % 3;
-      F_all[ga] += Fe[a];
-      for (Eigen::Index b = 0; b < Ke.cols(); ++b) {
-        const Eigen::Index gb = 3 * el.functions[static_cast<std::size_t>(b / 3)] + b % 3;
-        if (ga >= gb) lower.emplace_back(static_cast<int>(ga), static_cast<int>(gb), Ke(a, b));
-      }
-    }
+    assembled.add(el.functions, Ke);
+    for (Eigen::Index a = 0; a < Fe.size(); ++a) F[3 * el.functions[static_cast<std::size_t>(a / 3)] + a % 3] += Fe[a];
     out.report.quadrature_points += (el.degrees[0] + 1 + extra) * (el.degrees[1] + 1 + extra) * (el.degrees[2] + 1 + extra);
   }
   out.report.elements = static_cast<long long>(model.elements.size());
-  add_surface_loads(model, problem, extra, F_all);
-  detail::SparseMatrix K(dofs, dofs);
-  K.setFromTriplets(lower.begin(), lower.end());
-  lower.clear();
-  // K_ff u_f = F_f - K_fc u_c, on the free equations.
-  Triplets free;
-  Eigen::VectorXd F(out.report.unknowns);
-  for (Eigen::Index i = 0; i < dofs; ++i)
-    if (equation[static_cast<std::size_t>(i)] >= 0) F[equation[static_cast<std::size_t>(i)]] = F_all[i];
+  add_surface_loads(model, problem, extra, F);
+  // Constraints in place: F_f -= K_fc u_c, then a constrained dof's row and
+  // column become the identity and its load its value (K keeps its pattern).
+  detail::SparseMatrix& K = assembled.matrix();
+  const std::vector<double> original(K.valuePtr(), K.valuePtr() + K.nonZeros());
   for (int col = 0; col < K.outerSize(); ++col)
     for (detail::SparseMatrix::InnerIterator it(K, col); it; ++it) {
       const int i = static_cast<int>(it.row()), j = col;
-      const int ei = equation[static_cast<std::size_t>(i)], ej = equation[static_cast<std::size_t>(j)];
-      if (ei >= 0 && ej >= 0) free.emplace_back(ei, ej, it.value());
-      else if (ei >= 0) F[ei] -= it.value() * c.value[j];
-      else if (ej >= 0 && i != j) F[ej] -= it.value() * c.value[i];
+      const bool ci = c.set[static_cast<std::size_t>(i)], cj = c.set[static_cast<std::size_t>(j)];
+      if (!ci && cj) F[i] -= it.value() * c.value[j];
+      if (ci && !cj) F[j] -= it.value() * c.value[i];
     }
-  detail::SparseMatrix Kff(out.report.unknowns, out.report.unknowns);
-  Kff.setFromTriplets(free.begin(), free.end());
-  out.report.nonzeros = Kff.nonZeros();
+  for (int col = 0; col < K.outerSize(); ++col)
+    for (detail::SparseMatrix::InnerIterator it(K, col); it; ++it) {
+      const int i = static_cast<int>(it.row());
+      if (c.set[static_cast<std::size_t>(i)] || c.set[static_cast<std::size_t>(col)]) it.valueRef() = i == col ? 1.0 : 0.0;
+    }
+  for (Eigen::Index i = 0; i < dofs; ++i)
+    if (c.set[static_cast<std::size_t>(i)]) F[i] = c.value[i];
+  out.report.nonzeros = K.nonZeros();
   out.report.assembly_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const auto solve_start = std::chrono::steady_clock::now();
-  const Eigen::VectorXd uf = out.report.unknowns > 0 ? detail::solve_linear_system(Kff, F, options, out.report) : Eigen::VectorXd();
-  out.report.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - solve_start).count();
-  Eigen::VectorXd u = c.value;
+  Eigen::VectorXd u = detail::solve_linear_system(K, F, options, out.report);
   for (Eigen::Index i = 0; i < dofs; ++i)
-    if (equation[static_cast<std::size_t>(i)] >= 0) u[i] = uf[equation[static_cast<std::size_t>(i)]];
-  out.report.strain_energy = 0.5 * u.dot(K.selfadjointView<Eigen::Lower>() * u);
+    if (c.set[static_cast<std::size_t>(i)]) u[i] = c.value[i];  // exactly, whatever the solver's tolerance
+  out.report.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - solve_start).count();
+  // 1/2 u^T K u with the matrix as assembled (the lower triangle).
+  double energy = 0.0;
+  for (int col = 0, at = 0; col < K.outerSize(); ++col)
+    for (detail::SparseMatrix::InnerIterator it(K, col); it; ++it, ++at)
+      energy += original[static_cast<std::size_t>(at)] * u[it.row()] * u[col] * (it.row() == col ? 1.0 : 2.0);
+  out.report.strain_energy = 0.5 * energy;
   out.displacement = Eigen::Map<const Eigen::MatrixXd>(u.data(), 3, model.function_count()).transpose();
   out.report.max_displacement = out.displacement.rowwise().norm().maxCoeff();
   return out;

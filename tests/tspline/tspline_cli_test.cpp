@@ -82,6 +82,26 @@ TEST(TSplineCli, RefinedSphere2IsReadBackCertifiedAndViewable) {
                                         dir + "/t.vtu'); r.Update(); print(r.GetOutput().GetNumberOfCells())\"");
   ASSERT_EQ(vtk.status, 0) << vtk.output;
   EXPECT_EQ(std::stol(vtk.output), static_cast<long>(t.elements.size()));
+  // `igaprep solve` with the same flags: the unrefined T-spline gives the
+  // multipatch's strain energy, the refined one a little more (a larger
+  // space under a load), and the result file carries u per function.
+  const std::string flags = " --fix outer --body-force 0,0,-1";
+  ASSERT_EQ(run_command(cli("tspline " + dir + "/run/model.h5 -o " + dir + "/plain.h5")).status, 0);
+  for (const std::string name : {"run/model", "plain", "t"}) {
+    const CommandResult s = run_command(cli("solve " + dir + "/" + name + ".h5 -o " + dir + "/solved_" + std::to_string(name.size()) + ".h5" + flags));
+    ASSERT_EQ(s.status, 0) << name << ": " << s.output;
+  }
+  const double multipatch = exporter::read_hdf5_model(dir + "/solved_9.h5").strain_energy;
+  const spline::ExtractionModel plain = exporter::read_hdf5_extraction(dir + "/solved_5.h5");
+  const spline::ExtractionModel refined = exporter::read_hdf5_extraction(dir + "/solved_1.h5");
+  EXPECT_TRUE(plain.has_solution);
+  EXPECT_NEAR(plain.strain_energy, multipatch, 1e-9 * multipatch);
+  ASSERT_EQ(refined.displacement.rows(), refined.function_count());
+  EXPECT_GT(refined.strain_energy, multipatch * (1 - 1e-9));
+  EXPECT_LT(refined.strain_energy, multipatch * 1.01);
+  EXPECT_NEAR(refined.max_displacement, refined.displacement.rowwise().norm().maxCoeff(), 1e-12 * refined.max_displacement);
+  const CommandResult refused = run_command(cli("solve " + dir + "/t.h5 -o " + dir + "/x.h5 --refine 1" + flags));
+  EXPECT_EQ(WEXITSTATUS(refused.status), 1) << refused.output;
   std::filesystem::remove_all(dir);
 }
 

@@ -49,6 +49,12 @@ struct ExtractionModel {
   std::vector<std::string> labels;
   std::vector<Material> materials;
   std::string provenance_generator, provenance_case, provenance_inputs;
+  // A solve result (as MultiPatch's): one displacement (ux, uy, uz) per
+  // function, coefficients in this basis; empty otherwise.
+  Eigen::MatrixXd displacement;
+  bool has_solution = false;
+  double strain_energy = 0.0;
+  double max_displacement = 0.0;
 
   int function_count() const { return static_cast<int>(control_points.rows()); }
   const Eigen::MatrixXd& C(int element) const {

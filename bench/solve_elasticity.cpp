@@ -11,37 +11,12 @@
 #include <vector>
 
 #include "igaprep/iga_check/elasticity_solve.h"
-#include "igaprep/spline/knot_vector.h"
+#include "bench_models.h"
 #include "peak_memory.h"
 
 using namespace igaprep;
 
 namespace {
-
-spline::MultiPatch box(int p, int n) {
-  spline::Patch pa;
-  pa.degrees = {p, p, p};
-  const double size[3] = {4.0, 1.0, 1.0};
-  std::vector<double> br(n + 1);
-  for (int i = 0; i <= n; ++i) br[i] = double(i) / n;
-  std::array<std::vector<double>, 3> g;
-  for (int d = 0; d < 3; ++d) {
-    pa.knots[d] = spline::knot_vector_from_breaks(br, p);
-    g[d] = spline::greville_abscissae(pa.knots[d], p);
-  }
-  pa.control_points.resize(pa.count(0) * pa.count(1) * pa.count(2), 3);
-  for (int k = 0; k < pa.count(2); ++k)
-    for (int j = 0; j < pa.count(1); ++j)
-      for (int i = 0; i < pa.count(0); ++i)
-        pa.control_points.row(pa.index(i, j, k)) << size[0] * g[0][i], size[1] * g[1][j], size[2] * g[2][k];
-  spline::MultiPatch mp;
-  mp.patches = {pa};
-  mp.materials = {{"steel", 210e9, 0.3}};
-  mp.labels = {"clamp", "tip"};
-  mp.boundaries = {{0, 1, 0}, {0, 2, 1}};
-  return mp;
-}
-
 
 void run(int p, int n, iga_check::LinearSolver solver) {
   iga_check::ElasticityProblem problem;
@@ -49,7 +24,7 @@ void run(int p, int n, iga_check::LinearSolver solver) {
   problem.tractions = {{"tip", Eigen::Vector3d(0, 0, -1e6)}};
   iga_check::ElasticityOptions options;
   options.solver = solver;
-  const auto sol = iga_check::solve_elasticity(box(p, n), problem, options);
+  const auto sol = iga_check::solve_elasticity(cantilever_box(p, n), problem, options);
   const auto& r = sol.report;
   std::printf(
       "p=%d n=%d solver=%s unknowns=%lld nonzeros=%lld elements=%lld qpoints=%lld assembly=%.2fs "

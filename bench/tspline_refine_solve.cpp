@@ -16,8 +16,8 @@
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/iga_check/elasticity_solve.h"
 #include "igaprep/iga_check/extraction_solve.h"
-#include "igaprep/spline/knot_vector.h"
 #include "igaprep/spline/tspline_model.h"
+#include "bench_models.h"
 #include "peak_memory.h"
 
 using namespace igaprep;
@@ -51,30 +51,8 @@ void refine_model(const std::string& file) {
               refined.function_count(), refined.elements.size(), peak_memory_kib() / 1024.0);
 }
 
-spline::MultiPatch cantilever(int n) {
-  spline::Patch pa;
-  pa.degrees = {3, 3, 3};
-  std::vector<double> br(static_cast<std::size_t>(n) + 1);
-  for (int i = 0; i <= n; ++i) br[static_cast<std::size_t>(i)] = double(i) / n;
-  std::array<std::vector<double>, 3> g;
-  for (std::size_t d = 0; d < 3; ++d) {
-    pa.knots[d] = spline::knot_vector_from_breaks(br, 3);
-    g[d] = spline::greville_abscissae(pa.knots[d], 3);
-  }
-  pa.control_points.resize(pa.count(0) * pa.count(1) * pa.count(2), 3);
-  for (int k = 0; k < pa.count(2); ++k)
-    for (int j = 0; j < pa.count(1); ++j)
-      for (int i = 0; i < pa.count(0); ++i) pa.control_points.row(pa.index(i, j, k)) << 4 * g[0][static_cast<std::size_t>(i)], g[1][static_cast<std::size_t>(j)], g[2][static_cast<std::size_t>(k)];
-  spline::MultiPatch mp;
-  mp.patches = {pa};
-  mp.materials = {{"steel", 210e9, 0.3}};
-  mp.labels = {"clamp", "tip"};
-  mp.boundaries = {{0, 1, 0}, {0, 2, 1}};
-  return mp;
-}
-
 void assembly_speed(int n) {
-  const spline::MultiPatch mp = cantilever(n);
+  const spline::MultiPatch mp = cantilever_box(3, n);
   iga_check::ElasticityProblem problem;
   problem.fixed = {{"clamp", {{true, true, true}}}};
   problem.tractions = {{"tip", Eigen::Vector3d(0, 0, -1e6)}};

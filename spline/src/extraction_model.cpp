@@ -123,12 +123,16 @@ ExtractionModel extraction_model(const MultiPatch& mp) {
   set_functions(mp, num, out);
   OperatorTable operators(out.operators);
   for (int p = 0; p < static_cast<int>(mp.patches.size()); ++p) add_patch_elements(mp, num, p, operators, out);
+  copy_model_descriptions(mp, out);
+  return out;
+}
+
+void copy_model_descriptions(const MultiPatch& mp, ExtractionModel& out) {
   out.labels = mp.labels;
   out.materials = mp.materials;
   out.provenance_generator = mp.provenance_generator;
   out.provenance_case = mp.provenance_case;
   out.provenance_inputs = mp.provenance_inputs;
-  return out;
 }
 
 BezierElement bernstein_element(const ExtractionModel& m, int element) {

@@ -593,11 +593,7 @@ ExtractionModel extraction_model(const TSplineModel& model) {
     }
     add_boundary_faces(model, static_cast<int>(p), first, cells[p], out);
   }
-  out.labels = mp.labels;
-  out.materials = mp.materials;
-  out.provenance_generator = mp.provenance_generator;
-  out.provenance_case = mp.provenance_case;
-  out.provenance_inputs = mp.provenance_inputs;
+  copy_model_descriptions(mp, out);
   return out;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 // Shared builders for the spline tests.
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -95,14 +96,18 @@ inline Eigen::Vector3d random_param(std::mt19937& rng, const Patch& P) {
 
 // Patch 0: a distorted box. Patch 1 glued to its u1 face with its own w0 face;
 // a's v runs along b's u reversed, a's w along b's v in the same sense.
-inline MultiPatch glued_patches(std::mt19937& rng) {
+inline MultiPatch glued_patches(std::mt19937& rng, std::array<int, 3> degrees_a = {{2, 2, 1}},
+                                std::array<int, 3> counts_a = {{4, 5, 3}},
+                                std::vector<double> knots_w = {0, 0, 0, 0.5, 1, 1, 1}) {
   MultiPatch mp;
-  Patch A = random_patch(rng, {{2, 2, 1}}, {{4, 5, 3}}, true, 1);
+  Patch A = random_patch(rng, degrees_a, counts_a, true, 1);
   Patch B;
-  B.degrees = {{A.degrees[1], A.degrees[2], 2}};
+  // B's w degree: its end knot's multiplicity less one.
+  const int pw = static_cast<int>(std::count(knots_w.begin(), knots_w.end(), knots_w.front())) - 1;
+  B.degrees = {{A.degrees[1], A.degrees[2], pw}};
   std::vector<double> ku(A.knots[1].size());
   for (size_t k = 0; k < ku.size(); ++k) ku[k] = 1.0 - A.knots[1][ku.size() - 1 - k];
-  B.knots = {{ku, A.knots[2], {0, 0, 0, 0.5, 1, 1, 1}}};
+  B.knots = {{ku, A.knots[2], knots_w}};
   const int n0 = B.count(0), n1 = B.count(1), n2 = B.count(2);
   B.control_points.resize(n0 * n1 * n2, 3);
   B.weights.resize(n0 * n1 * n2);
@@ -125,6 +130,16 @@ inline MultiPatch glued_patches(std::mt19937& rng) {
   mp.labels = {"outer"};
   mp.materials = {Material{"steel", 210e9, 0.3}};
   return mp;
+}
+
+// Largest extent of the control points: the diagonal of their bounding box.
+inline double diagonal(const MultiPatch& mp) {
+  Eigen::RowVector3d lo = Eigen::RowVector3d::Constant(1e300), hi = -lo;
+  for (const Patch& p : mp.patches) {
+    lo = lo.cwiseMin(p.control_points.colwise().minCoeff());
+    hi = hi.cwiseMax(p.control_points.colwise().maxCoeff());
+  }
+  return (hi - lo).norm();
 }
 
 }  // namespace spline_test

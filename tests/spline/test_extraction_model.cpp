@@ -28,15 +28,6 @@ MultiPatch labelled_model(std::mt19937& rng) {
   return mp;
 }
 
-double diagonal(const MultiPatch& mp) {
-  Eigen::RowVector3d lo = Eigen::RowVector3d::Constant(1e300), hi = -lo;
-  for (const Patch& p : mp.patches) {
-    lo = lo.cwiseMin(p.control_points.colwise().minCoeff());
-    hi = hi.cwiseMax(p.control_points.colwise().maxCoeff());
-  }
-  return (hi - lo).norm();
-}
-
 TEST(ExtractionModel, ReproducesTheMultipatchAtRandomPoints) {
   std::mt19937 rng(11);
   const MultiPatch mp = labelled_model(rng);

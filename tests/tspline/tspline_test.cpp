@@ -22,15 +22,6 @@ using namespace spline_test;
 
 namespace {
 
-double diagonal(const MultiPatch& mp) {
-  Eigen::RowVector3d lo = Eigen::RowVector3d::Constant(1e300), hi = -lo;
-  for (const Patch& p : mp.patches) {
-    lo = lo.cwiseMin(p.control_points.colwise().minCoeff());
-    hi = hi.cwiseMax(p.control_points.colwise().maxCoeff());
-  }
-  return (hi - lo).norm();
-}
-
 MultiPatch one_patch(std::mt19937& rng, bool rational) {
   MultiPatch mp;
   mp.patches = {random_patch(rng, {{3, 3, 3}}, {{7, 6, 5}}, rational, 1)};
@@ -40,36 +31,10 @@ MultiPatch one_patch(std::mt19937& rng, bool rational) {
   return mp;
 }
 
-// Patch 1 glued to the u1 face of patch 0 by its w0 face; 0's v runs along
-// 1's u reversed, 0's w along 1's v (as glued_patches, in cubics).
+// glued_patches in cubics (patch 1 on the u1 face of patch 0, reoriented),
+// every free side labelled.
 MultiPatch two_patches(std::mt19937& rng) {
-  MultiPatch mp;
-  Patch A = random_patch(rng, {{3, 3, 3}}, {{6, 7, 5}}, true, 1);
-  Patch B;
-  B.degrees = {{3, 3, 3}};
-  std::vector<double> ku(A.knots[1].size());
-  for (size_t k = 0; k < ku.size(); ++k) ku[k] = 1.0 - A.knots[1][ku.size() - 1 - k];
-  B.knots = {{ku, A.knots[2], {0, 0, 0, 0, 0.3, 0.6, 1, 1, 1, 1}}};
-  const int n0 = B.count(0), n1 = B.count(1), n2 = B.count(2);
-  B.control_points.resize(n0 * n1 * n2, 3);
-  B.weights.resize(n0 * n1 * n2);
-  std::uniform_real_distribution<double> J(-0.05, 0.05);
-  for (int k = 0; k < n2; ++k)
-    for (int j = 0; j < n1; ++j)
-      for (int i = 0; i < n0; ++i) {
-        const int a = A.index(A.count(0) - 1, A.count(1) - 1 - i, j);
-        Eigen::RowVector3d x = A.control_points.row(a) + Eigen::RowVector3d(0.3 * k, 0, 0);
-        if (k > 0) x += Eigen::RowVector3d(J(rng), J(rng), J(rng));
-        B.control_points.row(B.index(i, j, k)) = x;
-        B.weights[B.index(i, j, k)] = k == 0 ? A.weights[a] : 1.0 + 0.1 * k;
-      }
-  mp.patches = {A, B};
-  Interface itf;
-  itf.patch_a = 0, itf.side_a = kU1, itf.patch_b = 1, itf.side_b = kW0;
-  itf.dirmap = {{2, 0, 1}};
-  itf.orient = {{1, 0, 1}};
-  mp.interfaces = {itf};
-  mp.labels = {"outer"};
+  MultiPatch mp = glued_patches(rng, {{3, 3, 3}}, {{6, 7, 5}}, {0, 0, 0, 0, 0.3, 0.6, 1, 1, 1, 1});
   mp.materials = {Material{"steel", 210e3, 0.3}};
   for (const Side s : Side::all()) {
     if (s != kU1) mp.boundaries.push_back({0, s, 0});

@@ -70,6 +70,10 @@ struct ExtractionModel {
 // the diagonal) or has no patches.
 ExtractionModel extraction_model(const MultiPatch& mp);
 
+// Copies what describes the model besides its geometry (labels, materials,
+// provenance) from the multipatch it was made from.
+void copy_model_descriptions(const MultiPatch& mp, ExtractionModel& out);
+
 // The element as a Bezier element: its Bernstein points C_e^T times its
 // functions' control points in homogeneous coordinates (weights only when
 // the model is rational), and its parameter box.

@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <string>
 
 #include "igaprep/core/allocator.h"
@@ -73,7 +74,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: %s MODEL.h5 [n]\n", argv[0]);
     return 1;
   }
-  refine_model(argv[1]);
-  assembly_speed(argc > 2 ? std::stoi(argv[2]) : 10);
+  try {
+    refine_model(argv[1]);
+    assembly_speed(argc > 2 ? std::stoi(argv[2]) : 10);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
   return 0;
 }

@@ -14,6 +14,7 @@
 #include "extraction_pattern.h"
 #include "extraction_values.h"
 #include "igaprep/core/error.h"
+#include "igaprep/core/parallel.h"
 #include "igaprep/iga_check/elasticity_material.h"
 #include "igaprep/spline/gauss_legendre.h"
 
@@ -245,15 +246,25 @@ ExtractionSolution solve_elasticity(const spline::ExtractionModel& model, const 
   out.report.fixed_dofs = dofs - out.report.unknowns;
   detail::BlockLowerMatrix assembled(model);
   Eigen::VectorXd F = Eigen::VectorXd::Zero(dofs);
-  Eigen::MatrixXd Ke;
-  Eigen::VectorXd Fe;
-  for (std::size_t e = 0; e < model.elements.size(); ++e) {
-    const spline::ExtractionElement& el = model.elements[e];
-    const spline::Material& mat = model.materials.at(static_cast<std::size_t>(el.material));
-    element_system(model, static_cast<int>(e), problem, lame_parameters(mat.young_modulus, mat.poisson_ratio, mat.name), extra, Ke, Fe);
-    assembled.add(el.functions, Ke);
-    for (Eigen::Index a = 0; a < Fe.size(); ++a) F[3 * el.functions[static_cast<std::size_t>(a / 3)] + a % 3] += Fe[a];
-    out.report.quadrature_points += (el.degrees[0] + 1 + extra) * (el.degrees[1] + 1 + extra) * (el.degrees[2] + 1 + extra);
+  // Element matrices on all cores, a batch at a time; added in element order
+  // on one (the same sums whatever the thread count).
+  const std::size_t batch = 128;
+  std::vector<Eigen::MatrixXd> Ke(batch);
+  std::vector<Eigen::VectorXd> Fe(batch);
+  for (std::size_t first = 0; first < model.elements.size(); first += batch) {
+    const std::size_t count = std::min(batch, model.elements.size() - first);
+    parallel_for(count, [&](std::size_t i) {
+      const spline::ExtractionElement& el = model.elements[first + i];
+      const spline::Material& mat = model.materials.at(static_cast<std::size_t>(el.material));
+      element_system(model, static_cast<int>(first + i), problem, lame_parameters(mat.young_modulus, mat.poisson_ratio, mat.name), extra,
+                     Ke[i], Fe[i]);
+    });
+    for (std::size_t i = 0; i < count; ++i) {
+      const spline::ExtractionElement& el = model.elements[first + i];
+      assembled.add(el.functions, Ke[i]);
+      for (Eigen::Index a = 0; a < Fe[i].size(); ++a) F[3 * el.functions[static_cast<std::size_t>(a / 3)] + a % 3] += Fe[i][a];
+      out.report.quadrature_points += (el.degrees[0] + 1 + extra) * (el.degrees[1] + 1 + extra) * (el.degrees[2] + 1 + extra);
+    }
   }
   out.report.elements = static_cast<long long>(model.elements.size());
   add_surface_loads(model, problem, extra, F);

@@ -1,0 +1,358 @@
+#include <Eigen/Dense>
+#include <unsupported/Eigen/KroneckerProduct>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <utility>
+#include <numeric>
+#include <unordered_map>
+#include <string>
+
+#include "igaprep/core/error.h"
+#include "igaprep/spline/basis.h"
+#include "igaprep/spline/bezier_extraction.h"
+#include "igaprep/spline/evaluate.h"
+#include "igaprep/spline/tspline_functions.h"
+#include "tspline_cells.h"
+#include "tspline_common.h"
+
+namespace igaprep::spline::detail {
+
+namespace {
+
+// Boehm's insertion of knot x into the spline (K, c) of degree p.
+void insert_knot(std::vector<double>& K, std::vector<double>& c, int p, double x) {
+  const std::size_t s = static_cast<std::size_t>(std::upper_bound(K.begin(), K.end(), x) - K.begin()) - 1;
+  std::vector<double> out(c.size() + 1);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (i + static_cast<std::size_t>(p) <= s) out[i] = c[i];
+    else if (i > s) out[i] = c[i - 1];
+    else {
+      const double alpha = (x - K[i]) / (K[i + static_cast<std::size_t>(p)] - K[i]);
+      out[i] = alpha * c[i] + (1.0 - alpha) * c[i - 1];
+    }
+  }
+  K.insert(K.begin() + static_cast<std::ptrdiff_t>(s) + 1, x);
+  c = std::move(out);
+}
+
+// The Bernstein coefficients on [a, b] (inside one span) of the B-spline of
+// degree knots.size() - 2 on its own knots: the function as one of a clamped
+// spline, a and b inserted to multiplicity p (exact, so zeros stay zeros).
+Eigen::VectorXd bspline_bernstein(const std::vector<double>& knots, double a, double b) {
+  const int p = static_cast<int>(knots.size()) - 2;
+  std::vector<double> K(static_cast<std::size_t>(p), knots.front());
+  K.insert(K.end(), knots.begin(), knots.end());
+  K.insert(K.end(), static_cast<std::size_t>(p), knots.back());
+  std::vector<double> c(static_cast<std::size_t>(2 * p + 1), 0.0);
+  c[static_cast<std::size_t>(p)] = 1.0;
+  for (const double x : {a, b})
+    while (std::count(K.begin(), K.end(), x) < p) insert_knot(K, c, p, x);
+  // The last p copies of a are K[r + 1 .. r + p].
+  const std::ptrdiff_t r = (std::upper_bound(K.begin(), K.end(), a) - K.begin()) - 1 - p;
+  Eigen::VectorXd out(p + 1);
+  for (int j = 0; j <= p; ++j) out[j] = c[static_cast<std::size_t>(r + j)];
+  return out;
+}
+
+// Everything the elements of one patch need, per direction.
+struct PatchContext {
+  const Patch& patch;
+  const TMesh& mesh;
+  std::array<std::vector<double>, 3> breaks;
+  PatchContext(const Patch& p, const TMesh& m) : patch(p), mesh(m) {
+    for (std::size_t d = 0; d < 3; ++d) breaks[d] = detail::knot_breaks(p.knots[d]);
+  }
+  double parameter(int d, TCoord x) const { return detail::index_to_parameter(breaks[static_cast<std::size_t>(d)], x); }
+};
+
+struct SubBox {
+  std::array<TCoord, 3> lo, hi;
+  int element = 0;  // of the patch, u fastest
+};
+
+bool meets(const TFunction& f, const TMesh& mesh, const std::array<TCoord, 3>& lo, const std::array<TCoord, 3>& hi) {
+  for (int d = 0; d < 3; ++d)
+    if (!(f.support_lo(d) < hi[static_cast<std::size_t>(d)] && lo[static_cast<std::size_t>(d)] < f.support_hi(d, mesh))) return false;
+  return true;
+}
+
+// Per patch element the functions whose support meets it.
+std::vector<std::vector<int>> functions_by_element(const TMesh& mesh, const std::vector<TFunction>& functions) {
+  std::vector<std::vector<int>> out(static_cast<std::size_t>(mesh.elements()[0] * mesh.elements()[1] * mesh.elements()[2]));
+  for (std::size_t f = 0; f < functions.size(); ++f) {
+    std::array<int, 3> first{}, last{};
+    for (int d = 0; d < 3; ++d) {
+      first[static_cast<std::size_t>(d)] = static_cast<int>(functions[f].support_lo(d) / kTScale);
+      last[static_cast<std::size_t>(d)] = static_cast<int>((functions[f].support_hi(d, mesh) - 1) / kTScale);
+    }
+    for (int k = first[2]; k <= last[2]; ++k)
+      for (int j = first[1]; j <= last[1]; ++j)
+        for (int i = first[0]; i <= last[0]; ++i)
+          out[static_cast<std::size_t>(i + mesh.elements()[0] * (j + mesh.elements()[1] * k))].push_back(static_cast<int>(f));
+  }
+  return out;
+}
+
+// A box split where the knots of the functions on it run through it.
+std::vector<SubBox> bezier_cells(const TBox& q, const std::vector<TFunction>& functions, const std::vector<int>& on_box) {
+  std::array<std::vector<TCoord>, 3> cuts;
+  for (std::size_t d = 0; d < 3; ++d) {
+    cuts[d] = {q.lo[d], q.hi[d]};
+    for (const int f : on_box)
+      for (const TCoord k : functions[static_cast<std::size_t>(f)].knots[d])
+        if (q.lo[d] < k && k < q.hi[d]) cuts[d].push_back(k);
+    std::sort(cuts[d].begin(), cuts[d].end());
+    cuts[d].erase(std::unique(cuts[d].begin(), cuts[d].end()), cuts[d].end());
+  }
+  std::vector<SubBox> out;
+  for (std::size_t k = 0; k + 1 < cuts[2].size(); ++k)
+    for (std::size_t j = 0; j + 1 < cuts[1].size(); ++j)
+      for (std::size_t i = 0; i + 1 < cuts[0].size(); ++i)
+        out.push_back({{{cuts[0][i], cuts[1][j], cuts[2][k]}}, {{cuts[0][i + 1], cuts[1][j + 1], cuts[2][k + 1]}}, q.element});
+  return out;
+}
+
+// The Bernstein coefficients of function f along d on [a, b] (parameters).
+Eigen::VectorXd bernstein_1d(const PatchContext& ctx, const TFunction& f, int d, double a, double b) {
+  std::vector<double> knots;
+  for (const TCoord x : f.knots[static_cast<std::size_t>(d)]) knots.push_back(ctx.parameter(d, x));
+  return bspline_bernstein(knots, a, b);
+}
+
+// The 1-D Bernstein vectors of the patch's functions on its cells, each
+// distinct one once: keyed by direction, the function's knots and the
+// cell's interval (index space).
+class Bernstein1dTable {
+ public:
+  explicit Bernstein1dTable(const PatchContext& ctx) : ctx_(ctx) {
+    for (const int p : ctx.patch.degrees)
+      if (p + 2 + 3 > static_cast<int>(Key().size())) throw bad_input("T-spline: degree " + std::to_string(p) + " is above 9");
+  }
+  int id(const TFunction& f, int d, TCoord lo, TCoord hi) {
+    Key key{};
+    const std::vector<TCoord>& k = f.knots[static_cast<std::size_t>(d)];
+    std::copy(k.begin(), k.end(), key.begin());
+    key[k.size()] = lo, key[k.size() + 1] = hi, key[k.size() + 2] = d;
+    const auto [it, added] = ids_.emplace(key, static_cast<int>(vectors_.size()));
+    if (added) vectors_.push_back(bernstein_1d(ctx_, f, d, ctx_.parameter(d, lo), ctx_.parameter(d, hi)));
+    return it->second;
+  }
+  const Eigen::VectorXd& at(int id) const { return vectors_[static_cast<std::size_t>(id)]; }
+  const std::vector<Eigen::VectorXd>& vectors() const { return vectors_; }
+
+ private:
+  using Key = std::array<TCoord, 14>;  // p + 2 knots, the interval, the direction; zeros after
+  struct KeyHash {
+    std::size_t operator()(const Key& k) const {
+      std::size_t h = 1469598103934665603ull;
+      for (const TCoord x : k) h = (h ^ static_cast<std::size_t>(x)) * 1099511628211ull;
+      return h;
+    }
+  };
+  const PatchContext& ctx_;
+  std::unordered_map<Key, int, KeyHash> ids_;
+  std::vector<Eigen::VectorXd> vectors_;
+};
+
+
+// The coefficients, over the patch's own B-splines in direction d, of the
+// B-spline on the local knots `xi` (parameters): the row of the knot
+// insertion that makes xi consecutive knots of the patch's knot vector
+// (every knot of the patch inside xi's range is one of xi's: the mesh holds
+// every element boundary). Boehm's insertion: convex weights, exact to
+// round-off. Returns (first index, coefficients).
+std::pair<int, std::vector<double>> insertion_row(const std::vector<double>& U, int p, const std::vector<double>& xi) {
+  const int n = static_cast<int>(U.size()) - p - 1;
+  std::vector<double> K = U;
+  std::vector<std::vector<double>> columns(static_cast<std::size_t>(n));
+  for (int j = 0; j < n; ++j) columns[static_cast<std::size_t>(j)].assign(static_cast<std::size_t>(n), 0.0), columns[static_cast<std::size_t>(j)][static_cast<std::size_t>(j)] = 1.0;
+  for (const double x : xi) {
+    const long want = std::count(xi.begin(), xi.end(), x);
+    while (std::count(K.begin(), K.end(), x) < want) {
+      std::vector<double> knots;
+      for (auto& c : columns) {
+        knots = K;
+        insert_knot(knots, c, p, x);
+      }
+      K = std::move(knots);
+    }
+  }
+  const auto at = std::search(K.begin(), K.end(), xi.begin(), xi.end());
+  if (at == K.end()) throw internal_error("T-spline: a function's knots are not consecutive in its patch's refined knots");
+  const std::size_t row = static_cast<std::size_t>(at - K.begin());
+  int first = -1;
+  std::vector<double> alpha;
+  for (int j = 0; j < n; ++j) {
+    const double a = columns[static_cast<std::size_t>(j)][row];
+    if (a == 0.0) continue;
+    if (first < 0) first = j;
+    alpha.resize(static_cast<std::size_t>(j - first) + 1, 0.0);
+    alpha.back() = a;
+  }
+  return {first, alpha};
+}
+
+// Each function's control point (homogeneous) from the patch's: the tensor
+// product of the three insertion rows applied to the patch's control net.
+// The geometry is unchanged: the T-spline space holds the patch's.
+void set_control_points(const PatchContext& ctx, PatchCells& cells) {
+  const Patch& P = ctx.patch;
+  std::array<std::map<std::vector<TCoord>, std::pair<int, std::vector<double>>>, 3> rows;
+  cells.homogeneous.setZero(static_cast<Eigen::Index>(cells.functions.size()), 4);
+  for (std::size_t f = 0; f < cells.functions.size(); ++f) {
+    std::array<const std::pair<int, std::vector<double>>*, 3> r{};
+    for (std::size_t d = 0; d < 3; ++d) {
+      const std::vector<TCoord>& k = cells.functions[f].knots[d];
+      auto it = rows[d].find(k);
+      if (it == rows[d].end()) {
+        std::vector<double> xi;
+        for (const TCoord x : k) xi.push_back(ctx.parameter(static_cast<int>(d), x));
+        it = rows[d].emplace(k, insertion_row(P.knots[d], P.degrees[d], xi)).first;
+      }
+      r[d] = &it->second;
+    }
+    for (std::size_t c = 0; c < r[2]->second.size(); ++c)
+      for (std::size_t b = 0; b < r[1]->second.size(); ++b)
+        for (std::size_t a = 0; a < r[0]->second.size(); ++a) {
+          const int l = P.index(r[0]->first + static_cast<int>(a), r[1]->first + static_cast<int>(b), r[2]->first + static_cast<int>(c));
+          const double alpha = r[0]->second[a] * r[1]->second[b] * r[2]->second[c];
+          const double w = P.rational() ? P.weights[l] : 1.0;
+          cells.homogeneous.row(static_cast<Eigen::Index>(f)).head<3>() += alpha * w * P.control_points.row(l);
+          cells.homogeneous(static_cast<Eigen::Index>(f), 3) += alpha * w;
+        }
+  }
+}
+
+// The cells (Bezier elements) of a refined patch with their functions and
+// C_e, and the functions' control points (set_control_points).
+PatchCells refined_patch_cells(const Patch& patch, const TMesh& mesh, int patch_index) {
+  PatchCells out;
+  out.functions = tspline_functions(mesh);
+  if (const auto bad = dual_compatibility_violation(mesh, out.functions))
+    throw internal_error("T-spline: the mesh of patch " + std::to_string(patch_index) + " is not dual compatible (functions " +
+                         std::to_string(bad->first) + " and " + std::to_string(bad->second) + ")");
+  const PatchContext ctx(patch, mesh);
+  const std::vector<std::vector<int>> by_element = functions_by_element(mesh, out.functions);
+  Bernstein1dTable table(ctx);
+  std::unordered_map<std::vector<int>, int, IntsHash> operator_ids;
+  for (const TBox& q : mesh.boxes()) {
+    std::vector<int> on_box;
+    for (const int f : by_element[static_cast<std::size_t>(q.element)])
+      if (meets(out.functions[static_cast<std::size_t>(f)], mesh, q.lo, q.hi)) on_box.push_back(f);
+    for (const SubBox& cell : bezier_cells(q, out.functions, on_box)) {
+      ExtractionElement e;
+      e.degrees = patch.degrees;
+      e.material = patch.material;
+      e.patch = patch_index;
+      for (int d = 0; d < 3; ++d) {
+        e.index[static_cast<std::size_t>(d)] = static_cast<int>(cell.lo[static_cast<std::size_t>(d)] / kTScale);
+        e.domain[static_cast<std::size_t>(d)] = {{ctx.parameter(d, cell.lo[static_cast<std::size_t>(d)]), ctx.parameter(d, cell.hi[static_cast<std::size_t>(d)])}};
+      }
+      std::vector<int> key;
+      for (const int f : on_box) {
+        const TFunction& fn = out.functions[static_cast<std::size_t>(f)];
+        if (!meets(fn, mesh, cell.lo, cell.hi)) continue;
+        for (int d = 0; d < 3; ++d) key.push_back(table.id(fn, d, cell.lo[static_cast<std::size_t>(d)], cell.hi[static_cast<std::size_t>(d)]));
+        e.functions.push_back(f);
+      }
+      auto it = operator_ids.find(key);
+      if (it == operator_ids.end()) {
+        it = operator_ids.emplace(key, static_cast<int>(out.operator_keys.size())).first;
+        out.operator_keys.push_back(std::move(key));
+      }
+      e.extraction = it->second;
+      out.elements.push_back(std::move(e));
+    }
+  }
+  out.vectors_1d = table.vectors();
+  set_control_points(ctx, out);
+  return out;
+}
+
+// An unrefined patch: its own elements, B-splines (the functions in the
+// same order: tspline_functions) and control points; the rows of its 1-D
+// extraction operators are the 1-D vectors.
+PatchCells tensor_patch_cells(const Patch& patch, const TMesh& mesh, int patch_index) {
+  PatchCells out;
+  out.functions = tspline_functions(mesh);
+  if (static_cast<Eigen::Index>(out.functions.size()) != patch.control_points.rows())
+    throw internal_error("T-spline: the tensor mesh of patch " + std::to_string(patch_index) + " has another function count");
+  const PatchExtraction ex = bezier_extraction(patch);
+  std::array<std::vector<int>, 3> first_row;  // per direction and element: the id of its first row
+  for (std::size_t d = 0; d < 3; ++d)
+    for (const Eigen::MatrixXd& C : ex.dirs[d].C) {
+      first_row[d].push_back(static_cast<int>(out.vectors_1d.size()));
+      for (Eigen::Index r = 0; r < C.rows(); ++r) out.vectors_1d.push_back(C.row(r).transpose());
+    }
+  std::map<std::array<int, 3>, int> operator_ids;
+  for (int ew = 0; ew < ex.element_count(2); ++ew)
+    for (int ev = 0; ev < ex.element_count(1); ++ev)
+      for (int eu = 0; eu < ex.element_count(0); ++eu) {
+        ExtractionElement e;
+        e.degrees = patch.degrees;
+        e.material = patch.material;
+        e.patch = patch_index;
+        e.index = {{eu, ev, ew}};
+        const int at[3] = {eu, ev, ew};
+        for (std::size_t d = 0; d < 3; ++d)
+          e.domain[d] = {{ex.dirs[d].breaks[static_cast<std::size_t>(at[d])], ex.dirs[d].breaks[static_cast<std::size_t>(at[d]) + 1]}};
+        e.functions = element_control_points(patch, ex, eu, ev, ew);
+        const std::array<int, 3> key{{first_row[0][static_cast<std::size_t>(eu)], first_row[1][static_cast<std::size_t>(ev)],
+                                      first_row[2][static_cast<std::size_t>(ew)]}};
+        const auto [it, added] = operator_ids.emplace(key, static_cast<int>(out.operator_keys.size()));
+        if (added) {
+          std::vector<int> rows;
+          for (int k = 0; k <= patch.degrees[2]; ++k)
+            for (int j = 0; j <= patch.degrees[1]; ++j)
+              for (int i = 0; i <= patch.degrees[0]; ++i) rows.insert(rows.end(), {key[0] + i, key[1] + j, key[2] + k});
+          out.operator_keys.push_back(std::move(rows));
+        }
+        e.extraction = it->second;
+        out.elements.push_back(std::move(e));
+      }
+  out.homogeneous.resize(patch.control_points.rows(), 4);
+  for (Eigen::Index l = 0; l < patch.control_points.rows(); ++l) {
+    const double w = patch.rational() ? patch.weights[l] : 1.0;
+    out.homogeneous.row(l) << w * patch.control_points.row(l), w;
+  }
+  return out;
+}
+
+}  // namespace
+
+PatchCells patch_cells(const Patch& patch, const TMesh& mesh, int patch_index) {
+  const bool tensor = static_cast<int>(mesh.boxes().size()) == mesh.elements()[0] * mesh.elements()[1] * mesh.elements()[2];
+  return tensor ? tensor_patch_cells(patch, mesh, patch_index) : refined_patch_cells(patch, mesh, patch_index);
+}
+
+// Nestedness, checked at every cell's centre: the patch's old geometry
+// comes back (the tests check it at random points).
+void check_reproduces_geometry(const Patch& patch, const PatchCells& cells, int patch_index, double tolerance) {
+  for (const ExtractionElement& e : cells.elements) {
+    std::array<Eigen::VectorXd, 3> B;
+    for (std::size_t d = 0; d < 3; ++d) {
+      B[d].resize(e.degrees[d] + 1);
+      bernstein_basis(e.degrees[d], 0.5, B[d].data());
+    }
+    const std::vector<int>& key = cells.operator_keys[static_cast<std::size_t>(e.extraction)];
+    Eigen::RowVector4d h = Eigen::RowVector4d::Zero();
+    for (std::size_t r = 0; r < e.functions.size(); ++r) {
+      double N = 1.0;
+      for (std::size_t d = 0; d < 3; ++d) N *= B[d].dot(cells.vectors_1d[static_cast<std::size_t>(key[3 * r + d])]);
+      h += N * cells.homogeneous.row(e.functions[r]);
+    }
+    Eigen::Vector3d u;
+    for (int d = 0; d < 3; ++d) u[d] = 0.5 * (e.domain[static_cast<std::size_t>(d)][0] + e.domain[static_cast<std::size_t>(d)][1]);
+    const double off = (h.head<3>().transpose() / h[3] - evaluate_point(patch, u)).cwiseAbs().maxCoeff();
+    if (!(off <= tolerance)) {
+      char text[160];
+      std::snprintf(text, sizeof text, "T-spline: patch %d does not reproduce its geometry (off by %.3g, tolerance %.3g)", patch_index, off,
+                    tolerance);
+      throw internal_error(text);
+    }
+  }
+}
+
+}  // namespace igaprep::spline::detail

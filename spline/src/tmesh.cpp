@@ -39,9 +39,8 @@ TMesh::TMesh(const std::array<int, 3>& elements, const std::array<int, 3>& degre
 // The neighbourhood of a box: the open box about its midpoint reaching
 // (p_d + 3) / 4 of its own width beyond it in each direction (1.5 widths
 // for cubics), wide enough for the supports of the functions a split makes.
-// Morgenstern's is a little smaller; every refined mesh is checked for dual
-// compatibility (tspline_functions.h), so a wider one costs boxes, never
-// correctness.
+// The size is ours, not taken from the paper: every refined mesh is checked
+// for dual compatibility when it is extracted (tspline_functions.h).
 bool TMesh::meets_neighbourhood(const TBox& near, const TBox& of) const {
   for (std::size_t d = 0; d < 3; ++d) {
     const double size = static_cast<double>(of.hi[d] - of.lo[d]);

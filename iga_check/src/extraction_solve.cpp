@@ -199,6 +199,14 @@ Constraints constraints(const spline::ExtractionModel& m, const ElasticityProble
   return c;
 }
 
+// The area of the element faces labelled `label`.
+double labelled_area(const spline::ExtractionModel& m, int label, int extra) {
+  double area = 0.0;
+  for (const spline::ExtractionBoundaryFace& f : m.boundary_faces)
+    if (f.label == label) area += face_values(m, f, extra).area.colwise().norm().sum();
+  return area;
+}
+
 // Surface loads: tractions, pressures (-p n) and forces spread over their sides' area.
 void add_surface_loads(const spline::ExtractionModel& m, const ElasticityProblem& problem, int extra, Eigen::VectorXd& F) {
   auto load = [&](int label, const std::function<Eigen::Vector3d(const Eigen::Vector3d& area)>& force_per) {
@@ -220,11 +228,7 @@ void add_surface_loads(const spline::ExtractionModel& m, const ElasticityProblem
     double area = 0.0;
     std::vector<int> labels;
     for (const std::string& l : fl.labels) labels.push_back(label_of(m, l, "force"));
-    for (const int l : labels)
-      load(l, [&](const Eigen::Vector3d& a) {
-        area += a.norm();
-        return Eigen::Vector3d::Zero().eval();
-      });
+    for (const int l : labels) area += labelled_area(m, l, extra);
     if (!(area > 0.0)) throw bad_input("force: its sides have no area");
     for (const int l : labels) load(l, [&](const Eigen::Vector3d& a) { return Eigen::Vector3d(a.norm() / area * fl.force); });
   }

@@ -1,18 +1,18 @@
 #include <Eigen/Dense>
 #include <unsupported/Eigen/KroneckerProduct>
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <map>
-#include <utility>
-#include <numeric>
-#include <unordered_map>
 #include <string>
+#include <unordered_map>
+#include <utility>
 
 #include "igaprep/core/error.h"
 #include "igaprep/spline/basis.h"
 #include "igaprep/spline/bezier_extraction.h"
 #include "igaprep/spline/evaluate.h"
+#include "igaprep/spline/knot_vector.h"
+#include "igaprep/spline/refine.h"
 #include "igaprep/spline/tspline_functions.h"
 #include "tspline_cells.h"
 #include "tspline_common.h"
@@ -21,20 +21,12 @@ namespace igaprep::spline::detail {
 
 namespace {
 
-// Boehm's insertion of knot x into the spline (K, c) of degree p.
-void insert_knot(std::vector<double>& K, std::vector<double>& c, int p, double x) {
-  const std::size_t s = static_cast<std::size_t>(std::upper_bound(K.begin(), K.end(), x) - K.begin()) - 1;
-  std::vector<double> out(c.size() + 1);
-  for (std::size_t i = 0; i < out.size(); ++i) {
-    if (i + static_cast<std::size_t>(p) <= s) out[i] = c[i];
-    else if (i > s) out[i] = c[i - 1];
-    else {
-      const double alpha = (x - K[i]) / (K[i + static_cast<std::size_t>(p)] - K[i]);
-      out[i] = alpha * c[i] + (1.0 - alpha) * c[i - 1];
-    }
-  }
-  K.insert(K.begin() + static_cast<std::ptrdiff_t>(s) + 1, x);
-  c = std::move(out);
+// The copies of the knots of `wanted` (a multiset) that `U` lacks.
+std::vector<double> lacking_knots(const std::vector<double>& U, const std::vector<double>& wanted) {
+  std::vector<double> out;
+  for (const double x : unique_knots(wanted))
+    for (long c = std::count(wanted.begin(), wanted.end(), x) - knot_multiplicity(U, x); c > 0; --c) out.push_back(x);
+  return out;
 }
 
 // The Bernstein coefficients on [a, b] (inside one span) of the B-spline of
@@ -42,18 +34,19 @@ void insert_knot(std::vector<double>& K, std::vector<double>& c, int p, double x
 // spline, a and b inserted to multiplicity p (exact, so zeros stay zeros).
 Eigen::VectorXd bspline_bernstein(const std::vector<double>& knots, double a, double b) {
   const int p = static_cast<int>(knots.size()) - 2;
-  std::vector<double> K(static_cast<std::size_t>(p), knots.front());
-  K.insert(K.end(), knots.begin(), knots.end());
-  K.insert(K.end(), static_cast<std::size_t>(p), knots.back());
-  std::vector<double> c(static_cast<std::size_t>(2 * p + 1), 0.0);
-  c[static_cast<std::size_t>(p)] = 1.0;
-  for (const double x : {a, b})
-    while (std::count(K.begin(), K.end(), x) < p) insert_knot(K, c, p, x);
+  std::vector<double> U(static_cast<std::size_t>(p), knots.front());
+  U.insert(U.end(), knots.begin(), knots.end());
+  U.insert(U.end(), static_cast<std::size_t>(p), knots.back());
+  Eigen::MatrixXd c = Eigen::MatrixXd::Zero(2 * p + 1, 1);
+  c(p, 0) = 1.0;
+  std::vector<double> K;
+  Eigen::MatrixXd refined;
+  std::vector<double> ends(static_cast<std::size_t>(p), a);  // a and b to multiplicity p
+  ends.insert(ends.end(), static_cast<std::size_t>(p), b);
+  insert_knots_1d(U, p, c, lacking_knots(U, ends), &K, &refined);
   // The last p copies of a are K[r + 1 .. r + p].
-  const std::ptrdiff_t r = (std::upper_bound(K.begin(), K.end(), a) - K.begin()) - 1 - p;
-  Eigen::VectorXd out(p + 1);
-  for (int j = 0; j <= p; ++j) out[j] = c[static_cast<std::size_t>(r + j)];
-  return out;
+  const Eigen::Index r = (std::upper_bound(K.begin(), K.end(), a) - K.begin()) - 1 - p;
+  return refined.col(0).segment(r, p + 1);
 }
 
 // Everything the elements of one patch need, per direction.
@@ -62,7 +55,7 @@ struct PatchContext {
   const TMesh& mesh;
   std::array<std::vector<double>, 3> breaks;
   PatchContext(const Patch& p, const TMesh& m) : patch(p), mesh(m) {
-    for (std::size_t d = 0; d < 3; ++d) breaks[d] = detail::knot_breaks(p.knots[d]);
+    for (std::size_t d = 0; d < 3; ++d) breaks[d] = unique_knots(p.knots[d]);
   }
   double parameter(int d, TCoord x) const { return detail::index_to_parameter(breaks[static_cast<std::size_t>(d)], x); }
 };
@@ -161,35 +154,23 @@ class Bernstein1dTable {
 // B-spline on the local knots `xi` (parameters): the row of the knot
 // insertion that makes xi consecutive knots of the patch's knot vector
 // (every knot of the patch inside xi's range is one of xi's: the mesh holds
-// every element boundary). Boehm's insertion: convex weights, exact to
+// every element boundary). Knot insertion: convex weights, exact to
 // round-off. Returns (first index, coefficients).
 std::pair<int, std::vector<double>> insertion_row(const std::vector<double>& U, int p, const std::vector<double>& xi) {
   const int n = static_cast<int>(U.size()) - p - 1;
-  std::vector<double> K = U;
-  std::vector<std::vector<double>> columns(static_cast<std::size_t>(n));
-  for (int j = 0; j < n; ++j) columns[static_cast<std::size_t>(j)].assign(static_cast<std::size_t>(n), 0.0), columns[static_cast<std::size_t>(j)][static_cast<std::size_t>(j)] = 1.0;
-  for (const double x : xi) {
-    const long want = std::count(xi.begin(), xi.end(), x);
-    while (std::count(K.begin(), K.end(), x) < want) {
-      std::vector<double> knots;
-      for (auto& c : columns) {
-        knots = K;
-        insert_knot(knots, c, p, x);
-      }
-      K = std::move(knots);
-    }
-  }
+  std::vector<double> K;
+  Eigen::MatrixXd rows;  // the refined basis over the patch's: knot insertion of the identity
+  insert_knots_1d(U, p, Eigen::MatrixXd::Identity(n, n), lacking_knots(U, xi), &K, &rows);
   const auto at = std::search(K.begin(), K.end(), xi.begin(), xi.end());
   if (at == K.end()) throw internal_error("T-spline: a function's knots are not consecutive in its patch's refined knots");
-  const std::size_t row = static_cast<std::size_t>(at - K.begin());
+  const Eigen::Index row = at - K.begin();
   int first = -1;
   std::vector<double> alpha;
   for (int j = 0; j < n; ++j) {
-    const double a = columns[static_cast<std::size_t>(j)][row];
-    if (a == 0.0) continue;
+    if (rows(row, j) == 0.0) continue;
     if (first < 0) first = j;
     alpha.resize(static_cast<std::size_t>(j - first) + 1, 0.0);
-    alpha.back() = a;
+    alpha.back() = rows(row, j);
   }
   return {first, alpha};
 }
@@ -323,8 +304,7 @@ PatchCells tensor_patch_cells(const Patch& patch, const TMesh& mesh, int patch_i
 }  // namespace
 
 PatchCells patch_cells(const Patch& patch, const TMesh& mesh, int patch_index) {
-  const bool tensor = static_cast<int>(mesh.boxes().size()) == mesh.elements()[0] * mesh.elements()[1] * mesh.elements()[2];
-  return tensor ? tensor_patch_cells(patch, mesh, patch_index) : refined_patch_cells(patch, mesh, patch_index);
+  return mesh.refined() ? refined_patch_cells(patch, mesh, patch_index) : tensor_patch_cells(patch, mesh, patch_index);
 }
 
 // Nestedness, checked at every cell's centre: the patch's old geometry

@@ -34,7 +34,8 @@ struct PatchCells {
 PatchCells patch_cells(const Patch& patch, const TMesh& mesh, int patch_index);
 
 // Nestedness, checked at every cell's centre against the patch: throws
-// internal_error beyond `tolerance`.
+// internal_error beyond `tolerance`. (A patch whose mesh is not refined is
+// its own extraction and needs no check.)
 void check_reproduces_geometry(const Patch& patch, const PatchCells& cells, int patch_index, double tolerance);
 
 }  // namespace igaprep::spline::detail

@@ -1,14 +1,6 @@
 #include "tspline_common.h"
 
-#include <algorithm>
-
 namespace igaprep::spline::detail {
-
-std::vector<double> knot_breaks(const std::vector<double>& knots) {
-  std::vector<double> b = knots;
-  b.erase(std::unique(b.begin(), b.end()), b.end());
-  return b;
-}
 
 double index_to_parameter(const std::vector<double>& breaks, TCoord x) {
   const TCoord end = static_cast<TCoord>(breaks.size() - 1) * kTScale;

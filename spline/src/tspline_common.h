@@ -10,11 +10,9 @@
 
 namespace igaprep::spline::detail {
 
-// The distinct knots of a direction: element e spans [breaks[e], breaks[e + 1]].
-std::vector<double> knot_breaks(const std::vector<double>& knots);
-
-// The parameter of index coordinate x (clamped to the domain: the repeated
-// end knots numbered beyond it are the end knot again).
+// The parameter of index coordinate x, `breaks` the distinct knots
+// (unique_knots: element e spans [breaks[e], breaks[e + 1]]), clamped to the
+// domain: the repeated end knots numbered beyond it are the end knot again.
 double index_to_parameter(const std::vector<double>& breaks, TCoord x);
 
 // A box's face on a side of the patch, in the two tangent directions (increasing).

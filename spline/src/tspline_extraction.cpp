@@ -2,17 +2,12 @@
 #include <unsupported/Eigen/KroneckerProduct>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <map>
-#include <utility>
-#include <numeric>
-#include <unordered_map>
 #include <string>
+#include <unordered_map>
 
 #include "igaprep/core/error.h"
-#include "igaprep/spline/basis.h"
-#include "igaprep/spline/bezier_extraction.h"
-#include "igaprep/spline/evaluate.h"
+#include "igaprep/core/union_find.h"
 #include "igaprep/spline/tspline_functions.h"
 #include "igaprep/spline/tspline_model.h"
 #include "tspline_cells.h"
@@ -27,16 +22,6 @@ using detail::IntsHash;
 using detail::patch_cells;
 using detail::PatchCells;
 
-// Union-find over (patch, function) with patch offsets.
-struct FunctionClasses {
-  std::vector<int> parent;
-  int find(int x) {
-    while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
-    return x;
-  }
-  void join(int a, int b) { parent[static_cast<std::size_t>(find(a))] = find(b); }
-};
-
 using Anchor = std::array<TCoord, 3>;
 
 Anchor anchor_of(const TFunction& f) { return {{f.anchor(0), f.anchor(1), f.anchor(2)}}; }
@@ -45,7 +30,7 @@ Anchor anchor_of(const TFunction& f) { return {{f.anchor(0), f.anchor(1), f.anch
 // end knots across it) with their twins on the other side: the same anchor
 // through the interface's direction map, the same knots along the face.
 void join_interface(const TSplineModel& m, const Interface& itf, const std::vector<PatchCells>& cells,
-                    const std::vector<int>& offset, FunctionClasses& classes) {
+                    const std::vector<int>& offset, UnionFind& classes) {
   const TMesh& A = m.meshes[static_cast<std::size_t>(itf.patch_a)];
   const TMesh& B = m.meshes[static_cast<std::size_t>(itf.patch_b)];
   const int na = itf.side_a.direction(), nb = itf.side_b.direction();
@@ -79,7 +64,7 @@ void join_interface(const TSplineModel& m, const Interface& itf, const std::vect
         throw internal_error("T-spline: interface of patches " + std::to_string(itf.patch_a) + " and " + std::to_string(itf.patch_b) +
                              ": twin functions with different knots along the face");
     }
-    classes.join(offset[static_cast<std::size_t>(itf.patch_a)] + static_cast<int>(f), offset[static_cast<std::size_t>(itf.patch_b)] + twin->second);
+    classes.unite(offset[static_cast<std::size_t>(itf.patch_a)] + static_cast<int>(f), offset[static_cast<std::size_t>(itf.patch_b)] + twin->second);
   }
 }
 
@@ -150,12 +135,11 @@ ExtractionModel extraction_model(const TSplineModel& model) {
   int total = 0;
   for (std::size_t p = 0; p < mp.patches.size(); ++p) {
     cells.push_back(patch_cells(mp.patches[p], model.meshes[p], static_cast<int>(p)));
-    check_reproduces_geometry(mp.patches[p], cells.back(), static_cast<int>(p), 1e-10 * scale);
+    if (model.meshes[p].refined()) check_reproduces_geometry(mp.patches[p], cells.back(), static_cast<int>(p), 1e-10 * scale);
     offset.push_back(total);
     total += static_cast<int>(cells.back().functions.size());
   }
-  FunctionClasses classes{std::vector<int>(static_cast<std::size_t>(total))};
-  std::iota(classes.parent.begin(), classes.parent.end(), 0);
+  UnionFind classes(total);
   for (const Interface& itf : mp.interfaces) join_interface(model, itf, cells, offset, classes);
   // Global ids in order of first appearance; every copy must agree.
   std::vector<int> global(static_cast<std::size_t>(total), -1), id_of_class(static_cast<std::size_t>(total), -1);

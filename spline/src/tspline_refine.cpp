@@ -3,6 +3,7 @@
 
 #include "igaprep/core/error.h"
 #include "igaprep/spline/evaluate.h"
+#include "igaprep/spline/knot_vector.h"
 #include "igaprep/spline/multipatch_topology.h"
 #include "igaprep/spline/tspline_model.h"
 #include "tspline_common.h"
@@ -16,12 +17,13 @@ TMesh tensor_mesh(const Patch& p, int index, const std::vector<int>& split_direc
   for (std::size_t d = 0; d < 3; ++d) {
     const std::vector<double>& U = p.knots[d];
     const int deg = p.degrees[d];
-    for (std::size_t k = static_cast<std::size_t>(deg) + 1; k + static_cast<std::size_t>(deg) + 1 < U.size(); ++k)
-      if (U[k] == U[k - 1] || U[k] == U[k + 1])
-        throw bad_input("T-spline: patch " + std::to_string(index) + " has an interior knot " + std::to_string(U[k]) +
+    const std::vector<double> breaks = unique_knots(U);
+    for (std::size_t k = 1; k + 1 < breaks.size(); ++k)
+      if (knot_multiplicity(U, breaks[k]) > 1)
+        throw bad_input("T-spline: patch " + std::to_string(index) + " has an interior knot " + std::to_string(breaks[k]) +
                         " of multiplicity above 1 in direction " + std::to_string(d) +
                         " (local refinement needs simple interior knots)");
-    elements[d] = static_cast<int>(detail::knot_breaks(U).size()) - 1;
+    elements[d] = static_cast<int>(breaks.size()) - 1;
     if (deg % 2 == 0)
       throw bad_input("T-spline: patch " + std::to_string(index) + " has degree " + std::to_string(deg) +
                       " in direction " + std::to_string(d) + " (local refinement is defined for odd degrees)");
@@ -84,12 +86,11 @@ void mirror_interfaces(TSplineModel& m) {
   }
 }
 
-Eigen::Vector3d box_centre(const Patch& p, const TBox& b) {
+// The point of a box's parameter midpoint; breaks: the patch's distinct knots per direction.
+Eigen::Vector3d box_centre(const Patch& p, const std::array<std::vector<double>, 3>& breaks, const TBox& b) {
   Eigen::Vector3d u;
-  for (std::size_t d = 0; d < 3; ++d) {
-    const std::vector<double> breaks = detail::knot_breaks(p.knots[d]);
-    u[static_cast<Eigen::Index>(d)] = 0.5 * (detail::index_to_parameter(breaks, b.lo[d]) + detail::index_to_parameter(breaks, b.hi[d]));
-  }
+  for (std::size_t d = 0; d < 3; ++d)
+    u[static_cast<Eigen::Index>(d)] = 0.5 * (detail::index_to_parameter(breaks[d], b.lo[d]) + detail::index_to_parameter(breaks[d], b.hi[d]));
   return evaluate_point(p, u);
 }
 
@@ -118,11 +119,13 @@ int refine_in_region(TSplineModel& model, const Eigen::AlignedBox3d& region, int
   const long before = tmesh_box_count(model);
   for (std::size_t p = 0; p < model.meshes.size(); ++p) {
     TMesh& mesh = model.meshes[p];
+    const Patch& patch = model.base.patches[p];
+    const std::array<std::vector<double>, 3> breaks{{unique_knots(patch.knots[0]), unique_knots(patch.knots[1]), unique_knots(patch.knots[2])}};
     for (bool changed = true; changed;) {
       changed = false;
       for (std::size_t b = 0; b < mesh.boxes().size(); ++b) {
         const TBox& q = mesh.boxes()[b];
-        if (q.level >= levels * mesh.split_direction_count() || !region.contains(box_centre(model.base.patches[p], q))) continue;
+        if (q.level >= levels * mesh.split_direction_count() || !region.contains(box_centre(patch, breaks, q))) continue;
         mesh.refine(static_cast<int>(b));
         changed = true;
       }

@@ -38,6 +38,8 @@ class TMesh {
   int split_direction_count() const { return static_cast<int>(split_directions_.size()); }
   TCoord extent(int d) const { return static_cast<TCoord>(elements_[static_cast<std::size_t>(d)]) * kTScale; }
   // The leaves inside one patch element (boxes() indices).
+  // Whether any box was split (otherwise the mesh is the patch's elements).
+  bool refined() const { return boxes_.size() != in_element_.size(); }
   const std::vector<int>& boxes_in(int element) const { return in_element_[static_cast<std::size_t>(element)]; }
 
   // Splits leaf `box` across its level's direction, after every coarser box

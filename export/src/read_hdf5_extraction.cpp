@@ -139,14 +139,18 @@ spline::ExtractionModel read_model(const Reader& r) {
   }
   read_operators(r, m);
   read_elements(r, m);
-  const std::vector<long long> faces = ints(r, r.root(), "boundary_faces", "/boundary_faces", {0, 3});
-  for (std::size_t k = 0; k < faces.size() / 3; ++k) {
-    const long long e = faces[3 * k], side = faces[3 * k + 1], label = faces[3 * k + 2];
-    if (e < 0 || e >= static_cast<long long>(m.elements.size()) || side < 1 || side > 6 || label < 0 ||
-        label >= static_cast<long long>(m.labels.size()))
-      r.bad("dataset /boundary_faces", "row " + std::to_string(k) + " names an element, side or label that does not exist");
-    m.boundary_faces.push_back({static_cast<int>(e), spline::Side(static_cast<int>(side)), static_cast<int>(label)});
-  }
+  auto read_faces = [&](const std::string& name, std::vector<spline::ExtractionBoundaryFace>& list) {
+    const std::vector<long long> faces = ints(r, r.root(), name, "/" + name, {0, 3});
+    for (std::size_t k = 0; k < faces.size() / 3; ++k) {
+      const long long e = faces[3 * k], side = faces[3 * k + 1], label = faces[3 * k + 2];
+      if (e < 0 || e >= static_cast<long long>(m.elements.size()) || side < 1 || side > 6 || label < 0 ||
+          label >= static_cast<long long>(m.labels.size()))
+        r.bad("dataset /" + name, "row " + std::to_string(k) + " names an element, side or label that does not exist");
+      list.push_back({static_cast<int>(e), spline::Side(static_cast<int>(side)), static_cast<int>(label)});
+    }
+  };
+  read_faces("boundary_faces", m.boundary_faces);
+  if (r.has_link(r.root(), "interface_faces")) read_faces("interface_faces", m.interface_faces);
   detail::read_provenance(r, &m.provenance_generator, &m.provenance_case, &m.provenance_inputs);
   return m;
 }

@@ -31,10 +31,11 @@ void check_extraction_model(const spline::ExtractionModel& m, const std::string&
   }
   if (m.displacement.size() > 0 && (m.displacement.rows() != m.function_count() || m.displacement.cols() != 3))
     fail("the displacement is not one (ux, uy, uz) per function");
-  for (const spline::ExtractionBoundaryFace& f : m.boundary_faces)
-    if (f.element < 0 || f.element >= static_cast<int>(m.elements.size()) || !f.side.valid() || f.label < 0 ||
-        f.label >= static_cast<int>(m.labels.size()))
-      fail("a boundary face names an element, side or label that does not exist");
+  for (const auto* list : {&m.boundary_faces, &m.interface_faces})
+    for (const spline::ExtractionBoundaryFace& f : *list)
+      if (f.element < 0 || f.element >= static_cast<int>(m.elements.size()) || !f.side.valid() || f.label < 0 ||
+          f.label >= static_cast<int>(m.labels.size()))
+        fail("a boundary or interface face names an element, side or label that does not exist");
 }
 
 void write_elements(const detail::Hdf5Writer& w, hid_t root, const spline::ExtractionModel& m) {
@@ -114,10 +115,14 @@ void write_file(const spline::ExtractionModel& m, const std::string& path, const
   }
   write_elements(w, root, m);
   write_operators(w, root, m);
-  std::vector<int> faces;
-  for (const spline::ExtractionBoundaryFace& f : m.boundary_faces) faces.insert(faces.end(), {f.element, f.side.index(), f.label});
-  w.write_dataset(root, "boundary_faces", "dataset /boundary_faces", H5T_STD_I32LE, H5T_NATIVE_INT,
-                  {static_cast<hsize_t>(m.boundary_faces.size()), 3}, faces.data());
+  auto write_faces = [&](const char* name, const std::vector<spline::ExtractionBoundaryFace>& list) {
+    std::vector<int> faces;
+    for (const spline::ExtractionBoundaryFace& f : list) faces.insert(faces.end(), {f.element, f.side.index(), f.label});
+    w.write_dataset(root, name, std::string("dataset /") + name, H5T_STD_I32LE, H5T_NATIVE_INT, {static_cast<hsize_t>(list.size()), 3},
+                    faces.data());
+  };
+  write_faces("boundary_faces", m.boundary_faces);
+  if (!m.interface_faces.empty()) write_faces("interface_faces", m.interface_faces);
   w.write_strings(root, "labels", "dataset /labels", m.labels);
   detail::write_materials(w, root, m.materials);
   detail::write_provenance(w, root, m.provenance_generator, m.provenance_case, m.provenance_inputs);

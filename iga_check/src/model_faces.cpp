@@ -42,6 +42,37 @@ std::vector<ModelFace> faces_of_surface(const spline::MultiPatch& mp, int surfac
   return faces;
 }
 
+std::vector<ModelFace> faces_of_surface(const spline::ExtractionModel& m, int surface) {
+  std::vector<ModelFace> faces;
+  auto add_face = [&](const spline::ExtractionBoundaryFace& bf, bool interface) {
+    if (bf.element < 0 || bf.element >= static_cast<int>(m.elements.size()))
+      throw bad_input("fidelity: a face refers to element " + std::to_string(bf.element) + ", which does not exist");
+    const spline::ExtractionElement& e = m.elements[static_cast<size_t>(bf.element)];
+    const spline::BezierElement be = spline::bernstein_element(m, bf.element);
+    spline::Patch bezier;  // the element as a one-element patch on [0, 1]^3
+    bezier.degrees = e.degrees;
+    for (size_t d = 0; d < 3; ++d) {
+      bezier.knots[d].assign(static_cast<size_t>(e.degrees[d] + 1), 0.0);
+      bezier.knots[d].resize(static_cast<size_t>(2 * (e.degrees[d] + 1)), 1.0);
+    }
+    bezier.control_points = be.points;
+    bezier.weights = be.weights;
+    ModelFace f;
+    f.surface = spline::boundary_surface(bezier, bf.side);
+    f.distance.patch = e.patch;
+    f.distance.element = bf.element;
+    f.distance.side = bf.side;
+    f.distance.interface = interface;
+    f.domain = {{{0.0, 1.0}, {0.0, 1.0}}};
+    faces.push_back(std::move(f));
+  };
+  for (const auto& bf : m.boundary_faces)
+    if (bf.label == surface) add_face(bf, false);
+  for (const auto& bf : m.interface_faces)
+    if (bf.label == surface) add_face(bf, true);
+  return faces;
+}
+
 double project_to_face(const ModelFace& f, const Eigen::Vector3d& x, Eigen::Vector2d& uv, int iterations) {
   double best = (spline::evaluate_point(f.surface, uv) - x).norm();
   for (int it = 0; it < iterations; ++it) {

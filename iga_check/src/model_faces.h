@@ -6,11 +6,13 @@
 // (fidelity.cpp) and the point pairs that fit its faces (surface_fit_pairs.cpp).
 #include <Eigen/Core>
 #include <array>
+#include <functional>
 #include <utility>
 #include <vector>
 
 #include "igaprep/iga_check/fidelity.h"
 #include "igaprep/spline/curve_surface.h"
+#include "igaprep/spline/extraction_model.h"
 #include "igaprep/spline/multipatch.h"
 #include "surface_distance.h"
 
@@ -28,6 +30,23 @@ std::vector<double> element_grid(const std::vector<double>& U, int n);
 // The faces standing for surface `surface`: boundary sides first, then
 // interfaces (patch a's side), in the model's order.
 std::vector<ModelFace> faces_of_surface(const spline::MultiPatch& mp, int surface);
+
+// The element faces of an extraction model standing for surface `surface`
+// (boundary faces, then interface faces), each the Bezier face of its
+// element on [0, 1]^2 (FaceDistance::element set).
+std::vector<ModelFace> faces_of_surface(const spline::ExtractionModel& m, int surface);
+
+// The fidelity of faces standing for one surface (fidelity.cpp): both ways,
+// relative to `diagonal`; the counts of boundary and interface faces set.
+SurfaceFidelity measure_faces(std::vector<ModelFace> faces, const mesh::TriMesh& tm, double diagonal,
+                              const FidelityOptions& options);
+
+// The fitting pairs of faces standing for one surface (surface_fit_pairs.cpp):
+// each face sample with its closest mesh point, each mesh triangle's centroid
+// with the faces' point nearest it; `pair` gets (face index, uv, target).
+void face_pairs(const std::vector<ModelFace>& faces, const mesh::TriMesh& mesh, int samples_per_element,
+                int tessellation_per_element, int newton_iterations,
+                const std::function<void(int, const Eigen::Vector2d&, const Eigen::Vector3d&)>& pair);
 
 // Gauss-Newton (with a tiny Levenberg term for collapsed edges) for the
 // point of the face nearest x, from the parameter guess uv (replaced by the

@@ -90,25 +90,28 @@ void add_patch_elements(const MultiPatch& mp, const GlobalNumbering& num, int p,
         e.material = patch.material;
         e.patch = p;
         e.index = {{eu, ev, ew}};
+        e.box = eu + ex.element_count(0) * (ev + ex.element_count(1) * ew);
         const int at[3] = {eu, ev, ew};
         for (int d = 0; d < 3; ++d)
           e.domain[static_cast<std::size_t>(d)] = {{ex.dirs[static_cast<std::size_t>(d)].breaks[static_cast<std::size_t>(at[d])],
                                                     ex.dirs[static_cast<std::size_t>(d)].breaks[static_cast<std::size_t>(at[d]) + 1]}};
         out.elements.push_back(std::move(e));
       }
-  // The element faces on the patch's labelled sides.
-  for (const BoundarySide& b : mp.boundaries) {
-    if (b.patch != p) continue;
-    const int n = b.side.direction(), last = ex.element_count(n) - 1;
+  // The element faces on the patch's labelled sides and on its interfaces with a surface.
+  auto add_faces = [&](Side side, int label, std::vector<ExtractionBoundaryFace>& faces) {
+    const int n = side.direction(), last = ex.element_count(n) - 1;
     for (int ew = 0; ew < ex.element_count(2); ++ew)
       for (int ev = 0; ev < ex.element_count(1); ++ev)
         for (int eu = 0; eu < ex.element_count(0); ++eu) {
           const int at[3] = {eu, ev, ew};
-          if (at[n] != (b.side.parameter() ? last : 0)) continue;
-          const int e = first + eu + ex.element_count(0) * (ev + ex.element_count(1) * ew);
-          out.boundary_faces.push_back({e, b.side, b.label});
+          if (at[n] != (side.parameter() ? last : 0)) continue;
+          faces.push_back({first + eu + ex.element_count(0) * (ev + ex.element_count(1) * ew), side, label});
         }
-  }
+  };
+  for (const BoundarySide& b : mp.boundaries)
+    if (b.patch == p) add_faces(b.side, b.label, out.boundary_faces);
+  for (const Interface& itf : mp.interfaces)
+    if (itf.patch_a == p && itf.surface >= 0) add_faces(itf.side_a, itf.surface, out.interface_faces);
 }
 
 }  // namespace
@@ -151,7 +154,7 @@ BezierElement bernstein_element(const ExtractionModel& m, int element) {
   return out;
 }
 
-Eigen::Vector3d evaluate_element(const ExtractionModel& m, int element, const Eigen::Vector3d& t) {
+Eigen::VectorXd element_basis(const ExtractionModel& m, int element, const Eigen::Vector3d& t) {
   const ExtractionElement& e = m.elements.at(static_cast<std::size_t>(element));
   std::array<std::vector<double>, 3> B;
   for (int d = 0; d < 3; ++d) {
@@ -164,15 +167,21 @@ Eigen::Vector3d evaluate_element(const ExtractionModel& m, int element, const Ei
   for (Eigen::Index b = 0; b < C.cols(); ++b)
     bernstein[b] = B[0][static_cast<std::size_t>(b % nu)] * B[1][static_cast<std::size_t>((b / nu) % nv)] *
                    B[2][static_cast<std::size_t>(b / (nu * nv))];
-  const Eigen::VectorXd N = C * bernstein;  // the element's functions at t
-  Eigen::Vector4d h = Eigen::Vector4d::Zero();
+  Eigen::VectorXd R = C * bernstein;  // the element's functions at t
+  double W = 0.0;
   for (std::size_t r = 0; r < e.functions.size(); ++r) {
-    const int f = e.functions[r];
-    const double wN = m.weights[f] * N[static_cast<Eigen::Index>(r)];
-    h.head<3>() += wN * m.control_points.row(f).transpose();
-    h[3] += wN;
+    R[static_cast<Eigen::Index>(r)] *= m.weights[e.functions[r]];
+    W += R[static_cast<Eigen::Index>(r)];
   }
-  return h.head<3>() / h[3];
+  return R / W;
+}
+
+Eigen::Vector3d evaluate_element(const ExtractionModel& m, int element, const Eigen::Vector3d& t) {
+  const ExtractionElement& e = m.elements.at(static_cast<std::size_t>(element));
+  const Eigen::VectorXd R = element_basis(m, element, t);
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();
+  for (std::size_t r = 0; r < e.functions.size(); ++r) x += R[static_cast<Eigen::Index>(r)] * m.control_points.row(e.functions[r]).transpose();
+  return x;
 }
 
 }  // namespace igaprep::spline

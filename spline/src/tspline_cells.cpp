@@ -218,7 +218,8 @@ PatchCells refined_patch_cells(const Patch& patch, const TMesh& mesh, int patch_
   const std::vector<std::vector<int>> by_element = functions_by_element(mesh, out.functions);
   Bernstein1dTable table(ctx);
   std::unordered_map<std::vector<int>, int, IntsHash> operator_ids;
-  for (const TBox& q : mesh.boxes()) {
+  for (std::size_t box = 0; box < mesh.boxes().size(); ++box) {
+    const TBox& q = mesh.boxes()[box];
     std::vector<int> on_box;
     for (const int f : by_element[static_cast<std::size_t>(q.element)])
       if (meets(out.functions[static_cast<std::size_t>(f)], mesh, q.lo, q.hi)) on_box.push_back(f);
@@ -227,6 +228,7 @@ PatchCells refined_patch_cells(const Patch& patch, const TMesh& mesh, int patch_
       e.degrees = patch.degrees;
       e.material = patch.material;
       e.patch = patch_index;
+      e.box = static_cast<int>(box);
       for (int d = 0; d < 3; ++d) {
         e.index[static_cast<std::size_t>(d)] = static_cast<int>(cell.lo[static_cast<std::size_t>(d)] / kTScale);
         e.domain[static_cast<std::size_t>(d)] = {{ctx.parameter(d, cell.lo[static_cast<std::size_t>(d)]), ctx.parameter(d, cell.hi[static_cast<std::size_t>(d)])}};
@@ -276,6 +278,7 @@ PatchCells tensor_patch_cells(const Patch& patch, const TMesh& mesh, int patch_i
         e.material = patch.material;
         e.patch = patch_index;
         e.index = {{eu, ev, ew}};
+        e.box = eu + ex.element_count(0) * (ev + ex.element_count(1) * ew);
         const int at[3] = {eu, ev, ew};
         for (std::size_t d = 0; d < 3; ++d)
           e.domain[d] = {{ex.dirs[d].breaks[static_cast<std::size_t>(at[d])], ex.dirs[d].breaks[static_cast<std::size_t>(at[d]) + 1]}};

@@ -114,15 +114,19 @@ class GlobalOperators {
   std::unordered_map<std::vector<int>, int, IntsHash> ids_;
 };
 
+// The element faces on the patch's labelled sides and on its interfaces with a surface.
 void add_boundary_faces(const TSplineModel& m, int patch, int first_element, const PatchCells& cells, ExtractionModel& out) {
   const Patch& P = m.base.patches[static_cast<std::size_t>(patch)];
-  for (const BoundarySide& b : m.base.boundaries) {
-    if (b.patch != patch) continue;
-    const std::size_t n = static_cast<std::size_t>(b.side.direction()), end = b.side.parameter() ? 1 : 0;
+  auto add_faces = [&](Side side, int label, std::vector<ExtractionBoundaryFace>& faces) {
+    const std::size_t n = static_cast<std::size_t>(side.direction()), end = side.parameter() ? 1 : 0;
     const double at = end ? P.knots[n].back() : P.knots[n].front();
     for (std::size_t e = 0; e < cells.elements.size(); ++e)
-      if (cells.elements[e].domain[n][end] == at) out.boundary_faces.push_back({first_element + static_cast<int>(e), b.side, b.label});
-  }
+      if (cells.elements[e].domain[n][end] == at) faces.push_back({first_element + static_cast<int>(e), side, label});
+  };
+  for (const BoundarySide& b : m.base.boundaries)
+    if (b.patch == patch) add_faces(b.side, b.label, out.boundary_faces);
+  for (const Interface& itf : m.base.interfaces)
+    if (itf.patch_a == patch && itf.surface >= 0) add_faces(itf.side_a, itf.surface, out.interface_faces);
 }
 
 }  // namespace

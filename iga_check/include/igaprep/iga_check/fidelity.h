@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "igaprep/mesh/tri_mesh.h"
+#include "igaprep/spline/extraction_model.h"
 #include "igaprep/spline/multipatch.h"
 
 namespace igaprep::iga_check {
@@ -35,6 +36,7 @@ struct DistanceStats {
 // One spline face standing for a surface: its farthest sample from the mesh.
 struct FaceDistance {
   int patch = -1;
+  int element = -1;  // of an extraction model (its patch in `patch`); -1 for a multipatch
   spline::Side side;
   bool interface = false;  // a material interface (else a labelled boundary side)
   double max = 0.0;        // model units
@@ -66,6 +68,9 @@ std::vector<UncoveredRegion> uncovered_regions(const mesh::TriMesh& mesh, const 
 // per element, so curved patches are not judged by their control hull).
 double model_diagonal(const spline::MultiPatch& mp);
 
+// The same for a model in extraction form (a T-spline): 3^3 points per element.
+double model_diagonal(const spline::ExtractionModel& m);
+
 // Diagonal of the bounding box of a mesh's vertices.
 double mesh_diagonal(const mesh::TriMesh& m);
 
@@ -73,6 +78,11 @@ double mesh_diagonal(const mesh::TriMesh& m);
 // that relative distances divide by (model_diagonal when <= 0).
 // Output: one entry per surface that at least one spline face stands for.
 std::vector<SurfaceFidelity> fidelity(const spline::MultiPatch& mp, const std::vector<mesh::TriMesh>& surfaces,
+                                      double diagonal = 0.0, const FidelityOptions& options = {});
+
+// The same for a model in extraction form (a T-spline): its boundary faces
+// and interface faces, each element face sampled as a face element.
+std::vector<SurfaceFidelity> fidelity(const spline::ExtractionModel& m, const std::vector<mesh::TriMesh>& surfaces,
                                       double diagonal = 0.0, const FidelityOptions& options = {});
 
 }  // namespace igaprep::iga_check

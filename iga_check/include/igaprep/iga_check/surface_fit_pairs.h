@@ -10,6 +10,7 @@
 #include "igaprep/mesh/tri_mesh.h"
 #include "igaprep/spline/fit_model_surface.h"
 #include "igaprep/spline/multipatch.h"
+#include "igaprep/spline/tspline_fit.h"
 
 namespace igaprep::iga_check {
 
@@ -22,5 +23,11 @@ struct SurfaceFitPairOptions {
 std::vector<spline::SurfaceFitPair> surface_fit_pairs(const spline::MultiPatch& mp, int surface,
                                                       const mesh::TriMesh& mesh,
                                                       const SurfaceFitPairOptions& options = {});
+
+// The same for the element faces of a model in extraction form (a T-spline,
+// spline/tspline_fit.h): per element face.
+std::vector<spline::ExtractionFitPair> extraction_fit_pairs(const spline::ExtractionModel& m, int surface,
+                                                            const mesh::TriMesh& mesh,
+                                                            const SurfaceFitPairOptions& options = {});
 
 }  // namespace igaprep::iga_check

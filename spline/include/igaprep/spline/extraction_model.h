@@ -27,6 +27,7 @@ struct ExtractionElement {
   int patch = -1;
   std::array<int, 3> index{{0, 0, 0}};
   std::array<std::array<double, 2>, 3> domain{};
+  int box = -1;  // a T-spline's: the box of its patch's T-mesh it lies in (tensor: the element index)
 };
 
 // An element face on a labelled boundary of the model.
@@ -46,6 +47,9 @@ struct ExtractionModel {
   // elements; stored per element they would take 0.9 GB).
   std::vector<Eigen::MatrixXd> operators;
   std::vector<ExtractionBoundaryFace> boundary_faces;
+  // Element faces on a material interface that lies on an input surface
+  // (Interface::surface; patch a's side): label = that surface.
+  std::vector<ExtractionBoundaryFace> interface_faces;
   std::vector<std::string> labels;
   std::vector<Material> materials;
   std::string provenance_generator, provenance_case, provenance_inputs;
@@ -78,6 +82,10 @@ void copy_model_descriptions(const MultiPatch& mp, ExtractionModel& out);
 // functions' control points in homogeneous coordinates (weights only when
 // the model is rational), and its parameter box.
 BezierElement bernstein_element(const ExtractionModel& m, int element);
+
+// The element's (rational) basis functions at Bernstein coordinates t in
+// [0, 1]^3, in the order of its `functions`: they sum to 1.
+Eigen::VectorXd element_basis(const ExtractionModel& m, int element, const Eigen::Vector3d& t);
 
 // The element's point at Bernstein coordinates t in [0, 1]^3 (rational when
 // the weights are not all 1).

@@ -1,0 +1,274 @@
+#include "igaprep/spline/tspline_fit.h"
+
+#include <Eigen/Sparse>
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+#include <unordered_map>
+
+#include "igaprep/core/error.h"
+
+namespace igaprep::spline {
+
+namespace {
+
+Eigen::Vector3d face_coordinates(Side side, const Eigen::Vector2d& uv) {
+  Eigen::Vector3d t;
+  t[side.direction()] = side.parameter() ? 1.0 : 0.0;
+  const std::array<int, 2> tan = side.tangent_directions();
+  t[tan[0]] = uv[0];
+  t[tan[1]] = uv[1];
+  return t;
+}
+
+// The face's unit normal at uv, pointing out of the element (zero where the
+// face is degenerate).
+Eigen::Vector3d outward_normal(const ExtractionModel& m, int element, Side side, const Eigen::Vector2d& uv) {
+  constexpr double h = 1e-5;
+  std::array<Eigen::Vector3d, 2> tangent;
+  for (int k = 0; k < 2; ++k) {
+    Eigen::Vector2d lo = uv, hi = uv;
+    lo[k] = std::max(0.0, uv[k] - h);
+    hi[k] = std::min(1.0, uv[k] + h);
+    tangent[static_cast<std::size_t>(k)] = face_point(m, element, side, hi) - face_point(m, element, side, lo);
+  }
+  Eigen::Vector3d n = tangent[0].cross(tangent[1]);
+  if (!(n.norm() > 1e-14 * (tangent[0].norm() * tangent[1].norm() + 1e-300))) return Eigen::Vector3d::Zero();
+  Eigen::Vector3d inside = face_coordinates(side, uv);
+  inside[side.direction()] = side.parameter() ? 1.0 - 1e-4 : 1e-4;
+  if (n.dot(face_point(m, element, side, uv) - evaluate_element(m, element, inside)) < 0.0) n = -n;
+  return n.normalized();
+}
+
+// The element's functions (positions in its `functions`) that do not vanish
+// on a face: a non-zero coefficient on a Bernstein polynomial of the face.
+std::vector<int> face_functions(const ExtractionModel& m, int element, Side side) {
+  const ExtractionElement& e = m.elements[static_cast<std::size_t>(element)];
+  const Eigen::MatrixXd& C = m.C(element);
+  const int n = side.direction(), at = side.parameter() ? e.degrees[static_cast<std::size_t>(n)] : 0;
+  const int nu = e.degrees[0] + 1, nv = e.degrees[1] + 1;
+  std::vector<int> out;
+  for (Eigen::Index r = 0; r < C.rows(); ++r)
+    for (Eigen::Index b = 0; b < C.cols(); ++b) {
+      const int index[3] = {static_cast<int>(b % nu), static_cast<int>((b / nu) % nv), static_cast<int>(b / (nu * nv))};
+      if (index[n] == at && std::abs(C(r, b)) > 1e-14) {
+        out.push_back(static_cast<int>(r));
+        break;
+      }
+    }
+  return out;
+}
+
+// Per function: the surfaces whose faces it does not vanish on.
+std::vector<std::set<int>> surfaces_of_functions(const ExtractionModel& m) {
+  std::vector<std::set<int>> out(static_cast<std::size_t>(m.function_count()));
+  for (const auto* list : {&m.boundary_faces, &m.interface_faces})
+    for (const ExtractionBoundaryFace& f : *list)
+      for (const int r : face_functions(m, f.element, f.side))
+        out[static_cast<std::size_t>(m.elements[static_cast<std::size_t>(f.element)].functions[static_cast<std::size_t>(r)])].insert(f.label);
+  return out;
+}
+
+double rms_distance(const ExtractionModel& m, const std::vector<ExtractionFitPair>& pairs) {
+  double sum = 0.0;
+  for (const ExtractionFitPair& p : pairs) sum += (face_point(m, p.element, p.side, p.uv) - p.target).squaredNorm();
+  return pairs.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(pairs.size()));
+}
+
+// The free functions of one surface, numbered as unknowns, and the faces
+// whose free functions the fairing ties together.
+struct FreeFunctions {
+  std::unordered_map<int, int> unknown;  // function -> unknown
+  std::vector<int> function;             // unknown -> function
+  std::vector<std::vector<int>> faces;   // per face of the surface: its free unknowns
+};
+
+FreeFunctions free_functions(const ExtractionModel& m, int surface) {
+  const std::vector<std::set<int>> on = surfaces_of_functions(m);
+  FreeFunctions out;
+  for (const auto* list : {&m.boundary_faces, &m.interface_faces})
+    for (const ExtractionBoundaryFace& f : *list) {
+      if (f.label != surface) continue;
+      std::vector<int> face;
+      for (const int r : face_functions(m, f.element, f.side)) {
+        const int g = m.elements[static_cast<std::size_t>(f.element)].functions[static_cast<std::size_t>(r)];
+        if (on[static_cast<std::size_t>(g)].size() != 1) continue;  // on two surfaces: stays
+        const auto [it, added] = out.unknown.emplace(g, static_cast<int>(out.function.size()));
+        if (added) out.function.push_back(g);
+        face.push_back(it->second);
+      }
+      out.faces.push_back(std::move(face));
+    }
+  return out;
+}
+
+// One linearized step: the offsets along the functions' normals.
+double fit_step(ExtractionModel& m, const FreeFunctions& free, const std::vector<ExtractionFitPair>& pairs, double smoothing) {
+  const Eigen::Index k = static_cast<Eigen::Index>(free.function.size());
+  struct PairTerm {
+    std::vector<std::pair<int, double>> basis;  // (unknown, value)
+    Eigen::Vector3d residual;
+  };
+  std::vector<PairTerm> terms;
+  Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(k, 3);
+  for (const ExtractionFitPair& p : pairs) {
+    const Eigen::VectorXd R = element_basis(m, p.element, face_coordinates(p.side, p.uv));
+    const Eigen::Vector3d n = outward_normal(m, p.element, p.side, p.uv);
+    PairTerm t;
+    t.residual = p.target - face_point(m, p.element, p.side, p.uv);
+    const std::vector<int>& fns = m.elements[static_cast<std::size_t>(p.element)].functions;
+    for (std::size_t r = 0; r < fns.size(); ++r) {
+      const auto it = free.unknown.find(fns[r]);
+      if (it == free.unknown.end() || std::abs(R[static_cast<Eigen::Index>(r)]) < 1e-14) continue;
+      t.basis.emplace_back(it->second, R[static_cast<Eigen::Index>(r)]);
+      normal.row(it->second) += R[static_cast<Eigen::Index>(r)] * n.transpose();
+    }
+    terms.push_back(std::move(t));
+  }
+  for (Eigen::Index i = 0; i < k; ++i)
+    if (normal.row(i).norm() > 0.0) normal.row(i).normalize();
+  std::vector<Eigen::Triplet<double>> a;
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(k), diagonal = Eigen::VectorXd::Zero(k);
+  for (const PairTerm& t : terms)
+    for (const auto& [i, Ri] : t.basis) {
+      b[i] += Ri * normal.row(i).dot(t.residual);
+      for (const auto& [j, Rj] : t.basis) {
+        const double v = Ri * Rj * normal.row(i).dot(normal.row(j));
+        a.emplace_back(i, j, v);
+        if (i == j) diagonal[i] += v;
+      }
+    }
+  const double mean = k > 0 ? diagonal.sum() / static_cast<double>(k) : 0.0;
+  if (!(mean > 0.0)) return 0.0;
+  for (const std::vector<int>& face : free.faces)  // fairing: a graph Laplacian over each face's unknowns
+    for (std::size_t x = 0; x < face.size(); ++x)
+      for (std::size_t y = x + 1; y < face.size(); ++y) {
+        const double w = smoothing * mean / static_cast<double>(face.size());
+        a.insert(a.end(), {{face[x], face[x], w}, {face[y], face[y], w}, {face[x], face[y], -w}, {face[y], face[x], -w}});
+      }
+  for (Eigen::Index i = 0; i < k; ++i) a.emplace_back(i, i, 1e-6 * mean + (normal.row(i).norm() > 0.0 ? 0.0 : mean));
+  Eigen::SparseMatrix<double> A(k, k);
+  A.setFromTriplets(a.begin(), a.end());
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
+  if (solver.info() != Eigen::Success) throw internal_error("T-spline fit: the normal equations are singular");
+  const Eigen::VectorXd delta = solver.solve(b);
+  double max_move = 0.0;
+  for (Eigen::Index i = 0; i < k; ++i) {
+    m.control_points.row(free.function[static_cast<std::size_t>(i)]) += delta[i] * normal.row(i);
+    max_move = std::max(max_move, std::abs(delta[i]));
+  }
+  return max_move;
+}
+
+// Per element: the largest distance of its pairs on the surfaces.
+std::vector<double> element_distances(const ExtractionModel& m, const std::vector<int>& surfaces, const ExtractionFitPairsFn& pairs) {
+  std::vector<double> out(m.elements.size(), 0.0);
+  for (const int s : surfaces)
+    for (const ExtractionFitPair& p : pairs(m, s)) {
+      double& d = out[static_cast<std::size_t>(p.element)];
+      d = std::max(d, (face_point(m, p.element, p.side, p.uv) - p.target).norm());
+    }
+  return out;
+}
+
+}  // namespace
+
+void carry_extraction_moves_inside(ExtractionModel& m, const Eigen::MatrixXd& before) {
+  const std::vector<std::set<int>> on = surfaces_of_functions(m);
+  std::vector<int> unknown(static_cast<std::size_t>(m.function_count()), -1);
+  int k = 0;
+  for (std::size_t f = 0; f < on.size(); ++f)
+    if (on[f].empty()) unknown[f] = k++;
+  if (k == 0) return;
+  // The umbrella Laplacian over "shares an element": each free function's
+  // move the mean of its neighbours'.
+  std::vector<std::set<int>> neighbours(static_cast<std::size_t>(k));
+  for (const ExtractionElement& e : m.elements)
+    for (const int f : e.functions)
+      if (unknown[static_cast<std::size_t>(f)] >= 0)
+        for (const int g : e.functions)
+          if (g != f) neighbours[static_cast<std::size_t>(unknown[static_cast<std::size_t>(f)])].insert(g);
+  const Eigen::MatrixXd move = m.control_points - before;
+  std::vector<Eigen::Triplet<double>> a;
+  Eigen::MatrixXd b = Eigen::MatrixXd::Zero(k, 3);
+  for (int i = 0; i < k; ++i) {
+    const double w = 1.0 / static_cast<double>(std::max<std::size_t>(1, neighbours[static_cast<std::size_t>(i)].size()));
+    a.emplace_back(i, i, 1.0);
+    for (const int g : neighbours[static_cast<std::size_t>(i)]) {
+      if (unknown[static_cast<std::size_t>(g)] >= 0)
+        a.emplace_back(i, unknown[static_cast<std::size_t>(g)], -w);
+      else
+        b.row(i) += w * move.row(g);
+    }
+  }
+  Eigen::SparseMatrix<double> A(k, k);
+  A.setFromTriplets(a.begin(), a.end());
+  Eigen::BiCGSTAB<Eigen::SparseMatrix<double>, Eigen::DiagonalPreconditioner<double>> solver(A);
+  solver.setTolerance(1e-8);
+  const Eigen::MatrixXd x = solver.solve(b);
+  if (solver.info() != Eigen::Success) throw internal_error("T-spline fit: the harmonic carry of the moves did not converge");
+  for (std::size_t f = 0; f < unknown.size(); ++f)
+    if (unknown[f] >= 0) m.control_points.row(static_cast<Eigen::Index>(f)) = before.row(static_cast<Eigen::Index>(f)) + x.row(unknown[f]);
+}
+
+Eigen::Vector3d face_point(const ExtractionModel& m, int element, Side side, const Eigen::Vector2d& uv) {
+  return evaluate_element(m, element, face_coordinates(side, uv));
+}
+
+ExtractionSurfaceFitResult fit_extraction_surface(ExtractionModel& m, int surface, const ExtractionFitPairsFn& pairs,
+                                                  const ExtractionSurfaceFitOptions& options) {
+  const FreeFunctions free = free_functions(m, surface);
+  ExtractionSurfaceFitResult out;
+  out.moved_points = static_cast<int>(free.function.size());
+  if (free.function.empty()) return out;
+  const Eigen::MatrixXd start = m.control_points;
+  std::vector<ExtractionFitPair> current = pairs(m, surface);
+  out.rms.push_back(rms_distance(m, current));
+  for (int it = 0; it < options.iterations; ++it) {
+    fit_step(m, free, current, options.smoothing);
+    current = pairs(m, surface);
+    out.rms.push_back(rms_distance(m, current));
+    const double before = out.rms[out.rms.size() - 2], after = out.rms.back();
+    if (!(std::abs(before - after) > options.stop_improvement * before)) break;
+  }
+  out.max_move = (m.control_points - start).rowwise().norm().maxCoeff();
+  return out;
+}
+
+TSplineFitResult fit_tspline(TSplineModel& model, const std::vector<int>& surfaces, const ExtractionFitPairsFn& pairs,
+                             const TSplineFitOptions& options) {
+  if (!(options.tolerance > 0.0)) throw bad_input("T-spline fit: the tolerance must be positive");
+  if (options.max_rounds < 0) throw bad_input("T-spline fit: max_rounds must be >= 0");
+  TSplineFitResult out;
+  for (int round = 0;; ++round) {
+    out.model = extraction_model(model);
+    const Eigen::MatrixXd before = out.model.control_points;
+    for (const int s : surfaces) fit_extraction_surface(out.model, s, pairs, options.fit);
+    if (options.carry_inside) carry_extraction_moves_inside(out.model, before);
+    const std::vector<double> distance = element_distances(out.model, surfaces, pairs);
+    TSplineFitRound r;
+    r.functions = out.model.function_count();
+    r.elements = static_cast<int>(out.model.elements.size());
+    std::set<std::pair<int, int>> boxes;
+    for (std::size_t e = 0; e < distance.size(); ++e) {
+      r.max_distance = std::max(r.max_distance, distance[e]);
+      if (!(distance[e] > options.tolerance)) continue;
+      ++r.elements_over;
+      boxes.emplace(out.model.elements[e].patch, out.model.elements[e].box);
+    }
+    out.reached = r.elements_over == 0;
+    if (out.reached || round == options.max_rounds) {
+      out.rounds.push_back(r);
+      return out;
+    }
+    r.boxes_refined = static_cast<int>(boxes.size());
+    out.rounds.push_back(r);
+    refine_boxes(model, std::vector<std::pair<int, int>>(boxes.begin(), boxes.end()));
+  }
+}
+
+}  // namespace igaprep::spline

@@ -30,7 +30,7 @@ TSplineRepairResult back_off_uncertified(spline::ExtractionModel& m, const Eigen
     std::set<int> functions;
     for (const int e : bad)
       for (const int f : m.elements[static_cast<std::size_t>(e)].functions) functions.insert(f);
-    const double keep = step == max_steps ? 0.0 : 0.5;
+    const double keep = step == max_steps ? 0.0 : 0.75;
     for (const int f : functions)
       m.control_points.row(f) = unfitted.row(f) + keep * (m.control_points.row(f) - unfitted.row(f));
     backed_off.insert(functions.begin(), functions.end());

@@ -234,6 +234,20 @@ ReduceSettings read_reduce(const json& v, const std::string& file) {
   return s;
 }
 
+// Exactly one of the two tolerances, positive; rounds optional.
+TSplineSettings read_tspline(const json& v, const std::string& file) {
+  ObjectReader r(v, "tspline", file);
+  TSplineSettings s;
+  s.tolerance = r.number_in("tolerance", 0.0, 0.0, std::numeric_limits<double>::max());
+  s.relative_tolerance = r.number_in("relative_tolerance", 0.0, 0.0, 1.0);
+  s.rounds = r.integer("rounds", s.rounds, 0, 12);
+  r.refuse_unknown();
+  if ((s.tolerance > 0.0) == (s.relative_tolerance > 0.0))
+    r.fail("'tspline' needs exactly one of 'tolerance' (> 0, model units) and 'relative_tolerance' (> 0, a fraction "
+           "of the outer surface's diagonal)");
+  return s;
+}
+
 // Every key optional; the section's presence asks for the surfaces.
 TnurccSettings read_tnurcc(const json& v, const std::string& file) {
   ObjectReader r(v, "tnurcc", file);
@@ -358,6 +372,10 @@ void read_sections(ObjectReader& r, const std::string& file, Case& c) {
   if (const json* v = r.find("validation")) c.validation = read_validation(*v, file);
   if (const json* d = r.find("reduce")) c.reduce = read_reduce(*d, file);
   if (const json* d = r.find("tnurcc")) c.tnurcc = read_tnurcc(*d, file);
+  if (const json* d = r.find("tspline")) c.tspline = read_tspline(*d, file);
+  if (c.tspline && c.fit.degree % 2 == 0)
+    r.fail("'tspline' needs an odd 'fit.degree' (the local refinement keeps even degrees analysis-suitable only "
+           "with rules not built yet; docs/tspline.md)");
   // Refused now rather than after the run's work: a reduced model's knots
   // are not uniform, which only equal intervals cover so far.
   if (c.reduce && c.tnurcc && !c.tnurcc->equal_intervals)

@@ -50,6 +50,12 @@ json reduce_json(const ReduceSettings& s) {
   return s.tolerance > 0.0 ? json{{"tolerance", s.tolerance}} : json{{"relative_tolerance", s.relative_tolerance}};
 }
 
+json tspline_json(const TSplineSettings& s) {
+  json j = s.tolerance > 0.0 ? json{{"tolerance", s.tolerance}} : json{{"relative_tolerance", s.relative_tolerance}};
+  j["rounds"] = s.rounds;
+  return j;
+}
+
 json tnurcc_json(const TnurccSettings& s) {
   return {{"crease_angle", s.crease_angle}, {"fit_iterations", s.fit_iterations},
           {"samples_per_face", s.samples_per_face}, {"vtu_per_face", s.vtu_per_face},
@@ -144,6 +150,7 @@ void add_stage_options(const Case& c, json& root) {
   root["validation"] = validation_json(c.validation);
   if (c.reduce) root["reduce"] = reduce_json(*c.reduce);
   if (c.tnurcc) root["tnurcc"] = tnurcc_json(*c.tnurcc);
+  if (c.tspline) root["tspline"] = tspline_json(*c.tspline);
   if (c.load_case) root["load_case"] = load_case_json(*c.load_case);
 }
 
@@ -174,6 +181,7 @@ std::string case_json(const Case& c, const std::string& relative_to, bool all_op
     if (!validation_is_default(c.validation)) root["validation"] = validation_json(c.validation);
     if (c.reduce) root["reduce"] = reduce_json(*c.reduce);
     if (c.tnurcc) root["tnurcc"] = tnurcc_json(*c.tnurcc);
+  if (c.tspline) root["tspline"] = tspline_json(*c.tspline);
   }
   return root.dump(2) + "\n";
 }

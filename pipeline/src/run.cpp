@@ -9,6 +9,7 @@
 #include "igaprep/core/input_files.h"
 #include "igaprep/core/output_folder.h"
 #include "igaprep/export/export_model.h"
+#include "igaprep/export/hdf5_extraction.h"
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/export/pvd.h"
 #include "igaprep/pipeline/check.h"
@@ -17,6 +18,7 @@
 #include "igaprep/pipeline/provenance.h"
 #include "igaprep/pipeline/reduce.h"
 #include "igaprep/pipeline/surfaces.h"
+#include "igaprep/pipeline/tspline.h"
 #include "igaprep/pipeline/validation.h"
 #include "igaprep/pipeline/volume.h"
 #include "igaprep/spline/multipatch_topology.h"
@@ -93,11 +95,40 @@ iga_check::PipelineSection pipeline_section(const Case& c, const param::Midsurfa
   return p;
 }
 
-std::string verdict_of(const iga_check::CheckReport& report, const iga_check::PipelineSection& p) {
+// The T-spline's figures beside the multipatch's (docs/check-report.md).
+void add_tspline_figures(const TSplineStage& t, const std::vector<std::string>& labels, iga_check::PipelineSection& p) {
+  const TSplineFigures& f = t.figures;
+  auto add = [&](const std::string& name, double value) { p.figures.emplace_back(name, value); };
+  add("tspline_tolerance", f.tolerance);
+  add("tspline_rounds", static_cast<double>(f.rounds.size()));
+  add("tspline_reached", f.reached ? 1.0 : 0.0);
+  add("tspline_control_points", static_cast<double>(t.model.function_count()));
+  add("tspline_elements", static_cast<double>(f.elements));
+  add("tspline_uncertified_elements", static_cast<double>(f.uncertified));
+  add("tspline_repair_uncertified_before", f.repair.uncertified_before);
+  add("tspline_repair_functions_backed_off", f.repair.functions_backed_off);
+  for (std::size_t i = 0; i < f.fidelity.size(); ++i)
+    add("tspline_fidelity_relative_" + (i < labels.size() ? labels[i] : std::to_string(i)), f.fidelity[i]);
+}
+
+// model_tspline.h5 beside model.h5, and its figures in the report.
+void run_tspline(const Case& c, const Surfaces& surfaces, Observer& observer, OutputFolder* folder, RunResult& r) {
+  iga_check::PipelineSection& p = *r.report.pipeline;
+  const TSplineStage t = tspline_stage(r.model, surfaces.inputs, *c.tspline, observer);
+  add_tspline_figures(t, r.model.labels, p);
+  r.tspline_uncertified = t.figures.uncertified;
+  if (!folder) return;
+  exporter::write_hdf5_extraction(t.model, (fs::path(folder->staging()) / "model_tspline.h5").string());
+  p.outputs.push_back("model_tspline.h5");
+}
+
+std::string verdict_of(const iga_check::CheckReport& report, const iga_check::PipelineSection& p,
+                       long tspline_uncertified) {
   std::string failed;
   for (const iga_check::Criterion& c : report.criteria)
     if (!c.passed) failed += (failed.empty() ? "" : ", ") + c.name;
   std::string verdict = report.passed ? "check passed" : "check FAILED (" + failed + ")";
+  if (tspline_uncertified > 0) verdict += text("; T-spline: %ld elements NOT certified", tspline_uncertified);
   if (!p.validation)
     verdict += "; validation off";
   else if (!p.validation->ran)
@@ -210,7 +241,7 @@ void refuse_replacing_case_files(const Case& c, const std::string& output_dir) {
   for (const CaseSurface& s : c.surfaces)
     if (!s.file.empty()) inputs.push_back(s.file);
   std::vector<std::string> outputs;
-  for (const char* name : {"model.h5", "report.json", "report.html", "result.h5", "run.pvd"})
+  for (const char* name : {"model.h5", "model_tspline.h5", "report.json", "report.html", "result.h5", "run.pvd"})
     outputs.push_back((fs::path(output_dir) / name).string());
   for (const std::string& format : c.export_formats)
     for (const std::string& path :
@@ -262,11 +293,12 @@ void run_stages(const Case& c, Observer& outer, OutputFolder* folder, RunResult&
       for (const auto& f : write_tnurcc(r.tnurcc, (fs::path(folder->staging()) / "tnurcc").string(), *c.tnurcc))
         p.outputs.push_back((fs::path("tnurcc") / fs::path(f).filename()).string());
   }
+  if (c.tspline) run_tspline(c, surfaces, observer, folder, r);
   if (c.validation.enabled) p.validation = validation_stage(r.model, r.report, c.validation, observer);
   if (c.load_case) run_load_case(c, observer, folder, r, stages);
   p.stages = stages;
-  p.passed = r.report.passed && (!p.validation || p.validation->met);
-  p.verdict = verdict_of(r.report, p);
+  p.passed = r.report.passed && (!p.validation || p.validation->met) && r.tspline_uncertified == 0;
+  p.verdict = verdict_of(r.report, p, r.tspline_uncertified);
   r.passed = p.passed;
   write_report_and_commit(r, folder);
 }

@@ -49,6 +49,6 @@ TSplineSurfaceFitResult fit_tspline_to_surfaces(spline::TSplineModel& model, con
 // points before the fit. At most `max_steps` halvings, the last one a full
 // return.
 TSplineRepairResult back_off_uncertified(spline::ExtractionModel& m, const Eigen::MatrixXd& unfitted,
-                                         const CertifyOptions& certify = {}, int max_steps = 6);
+                                         const CertifyOptions& certify = {}, int max_steps = 12);
 
 }  // namespace igaprep::iga_check

@@ -16,6 +16,7 @@
 #include "igaprep/param/volume_param.h"
 #include "igaprep/pipeline/reduce.h"
 #include "igaprep/pipeline/tnurcc.h"
+#include "igaprep/pipeline/tspline.h"
 #include "igaprep/spline/block_fit.h"
 #include "igaprep/spline/fit_model_surface.h"
 #include "igaprep/spline/optimize_jacobian.h"
@@ -115,6 +116,7 @@ struct Case {
   CaseValidation validation;                // section "validation"
   std::optional<ReduceSettings> reduce;     // section "reduce": data reduction after the fit
   std::optional<TnurccSettings> tnurcc;     // section "tnurcc": T-NURCC surfaces of the model (folder tnurcc/)
+  std::optional<TSplineSettings> tspline;   // section "tspline": a fitted, locally refined T-spline (model_tspline.h5)
   std::optional<CaseLoadCase> load_case;    // section "load_case"
 };
 

@@ -1,6 +1,6 @@
 #pragma once
 // The whole job on a case: validate, midsurface, base, decompose, param, fit,
-// check, export, validation and the load case, in that order, each stage's
+// check, export, T-spline, validation and the load case, in that order, each stage's
 // summary, progress and intermediates through the observer. Writes the
 // model (with its provenance), the asked formats, report.json/.html and,
 // for a load case, result.h5 into the output folder.
@@ -31,6 +31,7 @@ struct RunResult {
   std::optional<LoadCaseFigures> load_case;   // when the case has one
   std::vector<TnurccSurface> tnurcc;          // when the case asks for them (section "tnurcc")
   int rectangles = 0, boundary_segments = 0;  // of M's layout
+  long tspline_uncertified = 0;               // section "tspline": its elements not certified positive
   bool passed = false;                        // the check passed and the validation met its rate (or was off)
   std::string output_dir;                     // where the outputs went (when written)
 };

@@ -3,6 +3,7 @@
 // Jacobian, quality, fidelity and topology of a model; writes DIR/report.json
 // and DIR/report.html (docs/check-report.md). Exit 0 when every criterion
 // passes (docs/check-report.md), 2 otherwise, 1 on bad input.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -13,6 +14,7 @@
 #include "igaprep/core/error.h"
 #include "igaprep/export/hdf5_extraction.h"
 #include "igaprep/export/hdf5_model.h"
+#include "igaprep/iga_check/fidelity.h"
 #include "igaprep/iga_check/jacobian_certificate.h"
 #include "igaprep/iga_check/report.h"
 #include "igaprep/pipeline/provenance.h"
@@ -28,10 +30,9 @@ struct CheckArgs {
   int max_degree = iga_check::CertifyOptions{}.max_degree;
 };
 
-// A model in extraction form (a T-spline): every Bezier element certified;
-// the other criteria and the report files are not there yet for this form.
-int run_check_extraction(const CheckArgs& a) {
-  const spline::ExtractionModel m = exporter::read_hdf5_extraction(a.model);
+// The Jacobian criterion on every Bezier element of a model in extraction
+// form; true when it passes.
+bool check_extraction_jacobian(const spline::ExtractionModel& m, const CheckArgs& a) {
   iga_check::CertifyOptions options;
   options.max_degree = a.max_degree;
   const std::vector<iga_check::ElementCertificate> c = iga_check::certify_extraction_model(m, options);
@@ -49,14 +50,47 @@ int run_check_extraction(const CheckArgs& a) {
     std::cout << "FAIL: jacobian: " << failed << " of " << c.size()
               << " Bezier elements not certified positive (smallest lower bound of det J " << lowest << ", element "
               << worst << ")\n";
-  std::cout << "not checked on a Bezier-extraction model yet: conformity, watertightness, fidelity, volume; no report "
-               "files written ("
+  return failed == 0;
+}
+
+// The fidelity criterion as the multipatch check has it: per surface the
+// larger of the two largest distances, over the outer surface's diagonal,
+// against the limit; true when every surface passes.
+bool check_extraction_fidelity(const spline::ExtractionModel& m, const CheckInputs& in) {
+  const double diagonal = iga_check::mesh_diagonal(in.meshes.front());
+  bool passed = true;
+  for (const iga_check::SurfaceFidelity& f : iga_check::fidelity(m, in.meshes, diagonal)) {
+    const double worst = std::max(f.spline_to_mesh.max_relative, f.mesh_to_spline.max_relative);
+    const bool ok = worst <= in.options.fidelity_limit;
+    passed = passed && ok;
+    const std::string label = static_cast<std::size_t>(f.surface) < in.labels.size() ? in.labels[static_cast<std::size_t>(f.surface)] : f.label;
+    std::cout << (ok ? "PASS" : "FAIL") << ": fidelity " << label << ": " << 100.0 * worst << " % of the diagonal (model to surface "
+              << 100.0 * f.spline_to_mesh.max_relative << " %, surface to model " << 100.0 * f.mesh_to_spline.max_relative
+              << " %; limit " << 100.0 * in.options.fidelity_limit << " %)\n";
+  }
+  return passed;
+}
+
+// A model in extraction form (a T-spline): every Bezier element certified,
+// and with input surfaces the fidelity; the other criteria and the report
+// files are not there yet for this form.
+int run_check_extraction(const CheckArgs& a, const CheckLimitFlags& limits) {
+  const spline::ExtractionModel m = exporter::read_hdf5_extraction(a.model);
+  bool passed = check_extraction_jacobian(m, a);
+  const bool with_surfaces = !a.case_file.empty() || !a.surfaces.empty();
+  if (with_surfaces) {
+    CheckInputs in = read_check_inputs(a.case_file, a.surfaces);
+    limits.apply(in.options);
+    passed = check_extraction_fidelity(m, in) && passed;
+  }
+  std::cout << "not checked on a Bezier-extraction model yet: conformity, watertightness, "
+            << (with_surfaces ? "" : "fidelity (give --surface or --case), ") << "volume; no report files written ("
             << a.report_dir << " untouched)\n";
-  return failed == 0 ? 0 : 2;
+  return passed ? 0 : 2;
 }
 
 int run_check(const CheckArgs& a, const CheckLimitFlags& limits) {
-  if (exporter::is_hdf5_extraction(a.model)) return run_check_extraction(a);
+  if (exporter::is_hdf5_extraction(a.model)) return run_check_extraction(a, limits);
   std::vector<std::string> inputs = a.surfaces;
   inputs.push_back(a.model);
   if (!a.case_file.empty()) inputs.push_back(a.case_file);

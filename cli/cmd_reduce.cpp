@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "commands.h"
+#include "number_args.h"
 #include "igaprep/core/input_files.h"
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/pipeline/provenance.h"
@@ -65,7 +66,7 @@ void add_reduce_command(CLI::App& app) {
   sub->add_option("model", args->model, "Model file (HDF5, docs/hdf5-format.md)")->required()->check(CLI::ExistingFile);
   sub->add_option("-o,--output", args->output, "The reduced model (HDF5)")->required();
   auto* tol = sub->add_option("--tolerance", args->tolerance, "Largest move of any point of the model, model units")
-                  ->check(CLI::PositiveNumber);
+                  ->check(positive_number());
   auto* rel = sub->add_option("--relative-tolerance", args->relative_tolerance,
                               "Largest move of any point, as a fraction of the model's diagonal (e.g. 0.001)")
                   ->check(CLI::Range(1e-15, 1.0));

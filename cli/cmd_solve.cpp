@@ -168,7 +168,7 @@ void add_solve_command(CLI::App& app) {
   sub->add_option("--elevate", args->elevate, "Degree elevation in every direction")->check(CLI::Range(0, 10));
   sub->add_option("--max-unknowns", args->max_unknowns,
                   "Refuse a refined model with more unknowns than this (estimated first; default 1000000)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_number());
   sub->add_option("--solver", args->solver, "Linear solver: cholesky (CHOLMOD when present) or cg");
   set_body(sub, [args] { return run_solve(*args); });
 }

@@ -99,7 +99,7 @@ void add_tspline_command(CLI::App& app) {
       ->check(CLI::Range(1, 6));
   auto* surface = sub->add_option("--surface", a->surfaces, "fit the faces to this input surface (repeatable, outermost first: label 0, 1, ...)");
   auto* tolerance = sub->add_option("--tolerance", a->tolerance, "with --surface: the largest face-to-surface distance to refine to (model units)")
-                        ->check(CLI::PositiveNumber);
+                        ->check(positive_number());
   sub->add_option("--rounds", a->rounds, "with --surface: refinement rounds at most")->check(CLI::Range(0, 12));
   surface->needs(tolerance);
   tolerance->needs(surface);

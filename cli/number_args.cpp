@@ -27,4 +27,18 @@ std::vector<double> parse_numbers(const std::string& s, const std::string& what)
   return out;
 }
 
+CLI::Validator positive_number() {
+  return CLI::Validator(
+      [](std::string& s) -> std::string {
+        try {
+          size_t used = 0;
+          const double v = std::stod(s, &used);
+          if (used == s.size() && std::isfinite(v) && v > 0.0) return "";
+        } catch (const std::exception&) {
+        }
+        return "'" + s + "' must be a positive number";
+      },
+      "POSITIVE");
+}
+
 }  // namespace igaprep::cli

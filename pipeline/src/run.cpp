@@ -102,6 +102,9 @@ void add_tspline_figures(const TSplineStage& t, const std::vector<std::string>& 
   add("tspline_tolerance", f.tolerance);
   add("tspline_rounds", static_cast<double>(f.rounds.size()));
   add("tspline_reached", f.reached ? 1.0 : 0.0);
+  // The multipatch's distinct control points (its global numbering: one per
+  // function of the unrefined T-spline), to set beside the T-spline's.
+  add("tspline_base_control_points", f.rounds.empty() ? 0.0 : f.rounds.front().functions);
   add("tspline_control_points", static_cast<double>(t.model.function_count()));
   add("tspline_elements", static_cast<double>(f.elements));
   add("tspline_uncertified_elements", static_cast<double>(f.uncertified));

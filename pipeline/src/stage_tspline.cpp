@@ -22,10 +22,11 @@ void add_certificate(const spline::ExtractionModel& m, TSplineFigures& f) {
 }
 
 StageSummary summary(const spline::ExtractionModel& m, const TSplineFigures& f, double seconds) {
+  auto label = [&](std::size_t i) { return i < m.labels.size() ? m.labels[i] : std::to_string(i); };
   std::string line = text("%ld functions, %ld elements, %zu rounds, tolerance %g %s; %ld elements not certified",
                           static_cast<long>(m.function_count()), f.elements, f.rounds.size(), f.tolerance,
                           f.reached ? "reached" : "NOT reached", f.uncertified);
-  for (std::size_t i = 0; i < f.fidelity.size(); ++i) line += text("; fidelity %zu %.3f %%", i, 100.0 * f.fidelity[i]);
+  for (std::size_t i = 0; i < f.fidelity.size(); ++i) line += text("; fidelity %s %.3f %%", label(i).c_str(), 100.0 * f.fidelity[i]);
   std::vector<std::string> details;
   for (std::size_t k = 0; k < f.rounds.size(); ++k)
     details.push_back(text("round %zu: %d functions, %d elements, largest distance %g, %d elements over, %d boxes refined",

@@ -11,6 +11,7 @@
 #include <unordered_map>
 
 #include "igaprep/core/error.h"
+#include "igaprep/spline/bezier_extraction.h"
 
 namespace igaprep::spline {
 
@@ -25,22 +26,42 @@ Eigen::Vector3d face_coordinates(Side side, const Eigen::Vector2d& uv) {
   return t;
 }
 
+// The model's elements as Bezier elements, made when first asked: a fit
+// step evaluates each face at many points, and a Bernstein sum is far
+// cheaper than the element's basis (C_e times the Bernstein values).
+class ElementPoints {
+ public:
+  explicit ElementPoints(const ExtractionModel& m) : m_(m), bezier_(m.elements.size()), made_(m.elements.size(), false) {}
+
+  Eigen::Vector3d at(int element, const Eigen::Vector3d& t) {
+    const std::size_t e = static_cast<std::size_t>(element);
+    if (!made_[e]) bezier_[e] = bernstein_element(m_, element), made_[e] = true;
+    return evaluate_bezier(bezier_[e], m_.elements[e].degrees, t);
+  }
+  Eigen::Vector3d on_face(int element, Side side, const Eigen::Vector2d& uv) { return at(element, face_coordinates(side, uv)); }
+
+ private:
+  const ExtractionModel& m_;
+  std::vector<BezierElement> bezier_;
+  std::vector<bool> made_;
+};
+
 // The face's unit normal at uv, pointing out of the element (zero where the
 // face is degenerate).
-Eigen::Vector3d outward_normal(const ExtractionModel& m, int element, Side side, const Eigen::Vector2d& uv) {
+Eigen::Vector3d outward_normal(ElementPoints& points, int element, Side side, const Eigen::Vector2d& uv) {
   constexpr double h = 1e-5;
   std::array<Eigen::Vector3d, 2> tangent;
   for (int k = 0; k < 2; ++k) {
     Eigen::Vector2d lo = uv, hi = uv;
     lo[k] = std::max(0.0, uv[k] - h);
     hi[k] = std::min(1.0, uv[k] + h);
-    tangent[static_cast<std::size_t>(k)] = face_point(m, element, side, hi) - face_point(m, element, side, lo);
+    tangent[static_cast<std::size_t>(k)] = points.on_face(element, side, hi) - points.on_face(element, side, lo);
   }
   Eigen::Vector3d n = tangent[0].cross(tangent[1]);
   if (!(n.norm() > 1e-14 * (tangent[0].norm() * tangent[1].norm() + 1e-300))) return Eigen::Vector3d::Zero();
   Eigen::Vector3d inside = face_coordinates(side, uv);
   inside[side.direction()] = side.parameter() ? 1.0 - 1e-4 : 1e-4;
-  if (n.dot(face_point(m, element, side, uv) - evaluate_element(m, element, inside)) < 0.0) n = -n;
+  if (n.dot(points.on_face(element, side, uv) - points.at(element, inside)) < 0.0) n = -n;
   return n.normalized();
 }
 
@@ -75,7 +96,8 @@ std::vector<std::set<int>> surfaces_of_functions(const ExtractionModel& m) {
 
 double rms_distance(const ExtractionModel& m, const std::vector<ExtractionFitPair>& pairs) {
   double sum = 0.0;
-  for (const ExtractionFitPair& p : pairs) sum += (face_point(m, p.element, p.side, p.uv) - p.target).squaredNorm();
+  ElementPoints points(m);
+  for (const ExtractionFitPair& p : pairs) sum += (points.on_face(p.element, p.side, p.uv) - p.target).squaredNorm();
   return pairs.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(pairs.size()));
 }
 
@@ -106,38 +128,62 @@ FreeFunctions free_functions(const ExtractionModel& m, int surface) {
   return out;
 }
 
+// The normal equations' sums over one element's pairs: its free functions
+// (positions in the element and unknowns), sum R R^T and sum R residual^T
+// over those functions. Summed per element, not per pair: an element holds
+// many pairs, and one set of triplets per element keeps the assembly small.
+struct ElementSums {
+  std::vector<int> rows, unknowns;
+  Eigen::MatrixXd RR, Rres;
+};
+
+ElementSums element_sums(const ExtractionModel& m, const FreeFunctions& free, int element) {
+  ElementSums s;
+  const std::vector<int>& fns = m.elements[static_cast<std::size_t>(element)].functions;
+  for (std::size_t r = 0; r < fns.size(); ++r)
+    if (const auto it = free.unknown.find(fns[r]); it != free.unknown.end()) {
+      s.rows.push_back(static_cast<int>(r));
+      s.unknowns.push_back(it->second);
+    }
+  s.RR = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(s.rows.size()), static_cast<Eigen::Index>(s.rows.size()));
+  s.Rres = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(s.rows.size()), 3);
+  return s;
+}
+
 // One linearized step: the offsets along the functions' normals.
 double fit_step(ExtractionModel& m, const FreeFunctions& free, const std::vector<ExtractionFitPair>& pairs, double smoothing) {
   const Eigen::Index k = static_cast<Eigen::Index>(free.function.size());
-  struct PairTerm {
-    std::vector<std::pair<int, double>> basis;  // (unknown, value)
-    Eigen::Vector3d residual;
-  };
-  std::vector<PairTerm> terms;
+  std::unordered_map<int, ElementSums> sums;
   Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(k, 3);
+  ElementPoints points(m);
   for (const ExtractionFitPair& p : pairs) {
+    auto it = sums.find(p.element);
+    if (it == sums.end()) it = sums.emplace(p.element, element_sums(m, free, p.element)).first;
+    ElementSums& e = it->second;
     const Eigen::VectorXd R = element_basis(m, p.element, face_coordinates(p.side, p.uv));
-    const Eigen::Vector3d n = outward_normal(m, p.element, p.side, p.uv);
-    PairTerm t;
-    t.residual = p.target - face_point(m, p.element, p.side, p.uv);
-    const std::vector<int>& fns = m.elements[static_cast<std::size_t>(p.element)].functions;
-    for (std::size_t r = 0; r < fns.size(); ++r) {
-      const auto it = free.unknown.find(fns[r]);
-      if (it == free.unknown.end() || std::abs(R[static_cast<Eigen::Index>(r)]) < 1e-14) continue;
-      t.basis.emplace_back(it->second, R[static_cast<Eigen::Index>(r)]);
-      normal.row(it->second) += R[static_cast<Eigen::Index>(r)] * n.transpose();
+    const Eigen::Vector3d n = outward_normal(points, p.element, p.side, p.uv);
+    const Eigen::Vector3d residual = p.target - points.on_face(p.element, p.side, p.uv);
+    Eigen::VectorXd Rf(static_cast<Eigen::Index>(e.rows.size()));
+    for (std::size_t i = 0; i < e.rows.size(); ++i) {
+      Rf[static_cast<Eigen::Index>(i)] = R[e.rows[i]];
+      if (std::abs(Rf[static_cast<Eigen::Index>(i)]) >= 1e-14) normal.row(e.unknowns[i]) += Rf[static_cast<Eigen::Index>(i)] * n.transpose();
     }
-    terms.push_back(std::move(t));
+    e.RR.noalias() += Rf * Rf.transpose();
+    e.Rres.noalias() += Rf * residual.transpose();
   }
   for (Eigen::Index i = 0; i < k; ++i)
     if (normal.row(i).norm() > 0.0) normal.row(i).normalize();
   std::vector<Eigen::Triplet<double>> a;
   Eigen::VectorXd b = Eigen::VectorXd::Zero(k), diagonal = Eigen::VectorXd::Zero(k);
-  for (const PairTerm& t : terms)
-    for (const auto& [i, Ri] : t.basis) {
-      b[i] += Ri * normal.row(i).dot(t.residual);
-      for (const auto& [j, Rj] : t.basis) {
-        const double v = Ri * Rj * normal.row(i).dot(normal.row(j));
+  for (const auto& [element, e] : sums)
+    for (std::size_t x = 0; x < e.unknowns.size(); ++x) {
+      const int i = e.unknowns[x];
+      b[i] += normal.row(i).dot(e.Rres.row(static_cast<Eigen::Index>(x)));
+      for (std::size_t y = 0; y < e.unknowns.size(); ++y) {
+        const double rr = e.RR(static_cast<Eigen::Index>(x), static_cast<Eigen::Index>(y));
+        if (std::abs(rr) < 1e-28) continue;  // a function that vanishes on the element's faces with pairs
+        const int j = e.unknowns[y];
+        const double v = rr * normal.row(i).dot(normal.row(j));
         a.emplace_back(i, j, v);
         if (i == j) diagonal[i] += v;
       }
@@ -167,10 +213,11 @@ double fit_step(ExtractionModel& m, const FreeFunctions& free, const std::vector
 // Per element: the largest distance of its pairs on the surfaces.
 std::vector<double> element_distances(const ExtractionModel& m, const std::vector<int>& surfaces, const ExtractionFitPairsFn& pairs) {
   std::vector<double> out(m.elements.size(), 0.0);
+  ElementPoints points(m);
   for (const int s : surfaces)
     for (const ExtractionFitPair& p : pairs(m, s)) {
       double& d = out[static_cast<std::size_t>(p.element)];
-      d = std::max(d, (face_point(m, p.element, p.side, p.uv) - p.target).norm());
+      d = std::max(d, (points.on_face(p.element, p.side, p.uv) - p.target).norm());
     }
   return out;
 }
@@ -186,12 +233,16 @@ void carry_extraction_moves_inside(ExtractionModel& m, const Eigen::MatrixXd& be
   if (k == 0) return;
   // The umbrella Laplacian over "shares an element": each free function's
   // move the mean of its neighbours'.
-  std::vector<std::set<int>> neighbours(static_cast<std::size_t>(k));
+  std::vector<std::vector<int>> neighbours(static_cast<std::size_t>(k));
   for (const ExtractionElement& e : m.elements)
     for (const int f : e.functions)
       if (unknown[static_cast<std::size_t>(f)] >= 0)
         for (const int g : e.functions)
-          if (g != f) neighbours[static_cast<std::size_t>(unknown[static_cast<std::size_t>(f)])].insert(g);
+          if (g != f) neighbours[static_cast<std::size_t>(unknown[static_cast<std::size_t>(f)])].push_back(g);
+  for (std::vector<int>& n : neighbours) {
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
+  }
   const Eigen::MatrixXd move = m.control_points - before;
   std::vector<Eigen::Triplet<double>> a;
   Eigen::MatrixXd b = Eigen::MatrixXd::Zero(k, 3);

@@ -100,6 +100,11 @@ TEST(Case, BadKeysAreRefusedByName) {
       {R"(, "tnurcc": {"crease_angle": 200})", "'tnurcc.crease_angle' must be a number in"},
       {R"(, "tnurcc": {"fit": true})", "unknown key 'tnurcc.fit'"},
       {R"(, "reduce": {"tolerance": 0.01}, "tnurcc": {})", "'tnurcc' after 'reduce' needs \"equal_intervals\": true"},
+      {R"(, "tspline": {})", "'tspline' needs exactly one of 'tolerance'"},
+      {R"(, "tspline": {"tolerance": 0.01, "relative_tolerance": 0.001})", "'tspline' needs exactly one of 'tolerance'"},
+      {R"(, "tspline": {"relative_tolerance": 2})", "'tspline.relative_tolerance' must be a number in"},
+      {R"(, "tspline": {"tolerance": 0.01, "rounds": 13})", "'tspline.rounds' must lie in [0, 12]"},
+      {R"(, "tspline": {"tolerance": 0.01}, "fit": {"degree": 2})", "'tspline' needs an odd 'fit.degree'"},
       {R"(, "colour": 1)", "unknown key 'colour'"},
   };
   for (const auto& c : cases) {
@@ -207,6 +212,7 @@ TEST(Case, BuiltinCaseEqualsTheCommittedOne) {
 // case_json with every option reads back to the same options.
 TEST(Case, AllOptionsJsonReadsBack) {
   const Case c = parse_case(sphere2_case(R"(, "decomposition": {"inset": 0.4, "theta": 0.9}, "export": ["vtu"],
+      "tspline": {"relative_tolerance": 0.002, "rounds": 2},
       "load_case": {"fix": {"label": "outer", "components": "xz"}, "traction": {"label": "inner", "value": [0, 1, 0]},
                     "force": {"label": "outer", "box": [[0, 0, 0], [2, 2, 2]], "value": [0, 0, -2000]},
                     "rotation": {"density": 2.7e-9, "angular_velocity": 1000, "axis": [0, 1, 0], "point": [1, 0, 0]}})"),
@@ -215,6 +221,9 @@ TEST(Case, AllOptionsJsonReadsBack) {
   const Case back = parse_case(text, models_dir() + "/sphere2", "back.json");
   EXPECT_EQ(igaprep::pipeline::case_json(back, models_dir() + "/sphere2", true), text);
   EXPECT_EQ(back.volume.theta, 0.9);
+  ASSERT_TRUE(back.tspline);
+  EXPECT_EQ(back.tspline->relative_tolerance, 0.002);
+  EXPECT_EQ(back.tspline->rounds, 2);
   ASSERT_TRUE(back.load_case);
   EXPECT_FALSE(back.load_case->fix.at(0).components[1]);
   EXPECT_EQ(back.load_case->traction.at(0).value.y(), 1.0);

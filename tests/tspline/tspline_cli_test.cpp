@@ -1,5 +1,6 @@
 // The T-spline command on a model a run made (issue 18): sphere2 from
-// `igaprep run` refined locally by `igaprep tspline --refine-box`; the file
+// `igaprep run` (with its fitted T-spline, section "tspline") refined
+// locally by `igaprep tspline --refine-box`; the file
 // read back by the independent evaluator (tests/export/eval_extraction.py,
 // written from docs/hdf5-format.md) reproduces the multipatch's geometry,
 // `igaprep check` certifies every Bezier element, and VTK reads its VTU.
@@ -26,13 +27,45 @@ using namespace igaprep::test;
 
 std::string cli(const std::string& args) { return std::string(IGAPREP_CLI) + " " + args + " 2>&1"; }
 
+// The run's "tspline" section: model_tspline.h5 beside model.h5, closer to
+// both surfaces than the multipatch (0.27 % of the diagonal on the outer
+// one, measured) and within the tolerance but for the faceting of the
+// input (the fit pairs mesh triangles' centroids, the fidelity their
+// vertices), every element certified, the report's figures its own.
+void expect_fitted_tspline(const std::string& run, const std::string& case_file) {
+  const nlohmann::json figures = nlohmann::json::parse(std::ifstream(run + "/report.json"))["pipeline"]["figures"];
+  const spline::ExtractionModel t = exporter::read_hdf5_extraction(run + "/model_tspline.h5");
+  EXPECT_EQ(figures["tspline_control_points"].get<long>(), t.function_count());
+  EXPECT_EQ(figures["tspline_elements"].get<long>(), static_cast<long>(t.elements.size()));
+  EXPECT_EQ(figures["tspline_uncertified_elements"].get<long>(), 0);
+  EXPECT_EQ(figures["tspline_reached"].get<int>(), 1);
+  EXPECT_GT(figures["tspline_control_points"].get<long>(), figures["tspline_base_control_points"].get<long>());
+  for (const std::string label : {"outer", "inner"}) {
+    const double multipatch = figures["fidelity_relative_" + label].get<double>();
+    const double tspline = figures["tspline_fidelity_relative_" + label].get<double>();
+    EXPECT_LT(tspline, multipatch) << label;
+    EXPECT_LT(tspline, 1.25e-3) << label;
+  }
+  // `igaprep check` with the case: the certificate and the fidelity; a
+  // limit below the measured fidelity fails it.
+  const std::string check_args = "check " + run + "/model_tspline.h5 --case " + case_file + " --report " + run + "/tspline_report";
+  const CommandResult check = run_command(cli(check_args));
+  EXPECT_EQ(WEXITSTATUS(check.status), 0) << check.output;
+  for (const std::string line : {"PASS: jacobian: all", "PASS: fidelity outer: ", "PASS: fidelity inner: "})
+    EXPECT_NE(check.output.find(line), std::string::npos) << check.output;
+  const CommandResult strict = run_command(cli(check_args + " --fidelity-limit 0.01"));
+  EXPECT_EQ(WEXITSTATUS(strict.status), 2) << strict.output;
+  EXPECT_NE(strict.output.find("FAIL: fidelity outer: "), std::string::npos) << strict.output;
+}
+
 TEST(TSplineCli, RefinedSphere2IsReadBackCertifiedAndViewable) {
   const std::string dir = scratch_dir("tspline_sphere2");
   const std::string models = std::string(IGAPREP_SOURCE_DIR) + "/models/sphere2/";
   std::ofstream(dir + "/case.json") << R"({"name": "sphere2", "surfaces": [{"file": ")" << models
                                     << R"(outer.off", "label": "outer"}, {"file": ")" << models
-                                    << R"(inner.off", "label": "inner"}], "materials": [{"name": "shell", "young_modulus": 1000, "poisson_ratio": 0.3}, {"name": "core", "young_modulus": 100, "poisson_ratio": 0.25}], "validation": {"enabled": false}})";
+                                    << R"(inner.off", "label": "inner"}], "materials": [{"name": "shell", "young_modulus": 1000, "poisson_ratio": 0.3}, {"name": "core", "young_modulus": 100, "poisson_ratio": 0.25}], "validation": {"enabled": false}, "tspline": {"relative_tolerance": 0.001, "rounds": 3}})";
   ASSERT_EQ(run_command(cli("run " + dir + "/case.json -o " + dir + "/run")).status, 0);
+  expect_fitted_tspline(dir + "/run", dir + "/case.json");
   // The elements with centres at z > 0.3: a cap of the sphere, T-junctions around it.
   const CommandResult r = run_command(cli("tspline " + dir + "/run/model.h5 --refine-box -9,-9,0.3,9,9,9 --levels 1 -o " + dir + "/t.h5"));
   ASSERT_EQ(r.status, 0) << r.output;
@@ -109,6 +142,23 @@ TEST(TSplineCli, BadRefineBoxesAreRefused) {
     const CommandResult r = run_command(cli("tspline " + dir + "/missing.h5 --refine-box " + box + " -o " + dir + "/t.h5"));
     EXPECT_EQ(WEXITSTATUS(r.status), 1) << box << ": " << r.output;
     EXPECT_NE(r.output.find("error: --refine-box"), std::string::npos) << r.output;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(TSplineCli, SurfaceAndToleranceComeTogetherAndExcludeRefineBoxes) {
+  const std::string dir = scratch_dir("tspline_flags");
+  const std::string surface = " --surface " + std::string(IGAPREP_SOURCE_DIR) + "/models/sphere2/outer.off";
+  const std::vector<std::pair<std::string, std::string>> refused{
+      {surface, "--surface requires --tolerance"},
+      {" --tolerance 0.01", "--tolerance requires --surface"},
+      {surface + " --tolerance 0.01 --refine-box 0,0,0,1,1,1", "--refine-box excludes --surface"},
+      {surface + " --tolerance -1", "--tolerance: '-1' must be a positive number"},
+      {surface + " --tolerance 0.01 --rounds 13", "--rounds: Value 13 not in range 0 to 12"}};
+  for (const auto& [flags, message] : refused) {
+    const CommandResult r = run_command(cli("tspline " + dir + "/missing.h5 -o " + dir + "/t.h5" + flags));
+    EXPECT_EQ(WEXITSTATUS(r.status), 1) << flags << ": " << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << flags << ": " << r.output;
   }
   std::filesystem::remove_all(dir);
 }

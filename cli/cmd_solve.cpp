@@ -1,7 +1,7 @@
 // igaprep solve MODEL.h5 -o RESULT.h5 [--fix LABEL[:COMPONENTS]]...
 // [--pressure LABEL=P]... [--traction LABEL=TX,TY,TZ]... [--force LABEL=FX,FY,FZ]...
 // [--body-force FX,FY,FZ] [--rotation DENSITY,OMEGA[,AX,AY,AZ[,PX,PY,PZ]]]
-// [--refine N] [--elevate K] [--solver cholesky|cg]: linear elasticity on the
+// [--refine N] [--elevate K] [--solver auto|cholesky|cg|amg]: linear elasticity on the
 // model (docs/elasticity-solver.md); RESULT.h5 is the refined model plus the
 // displacement per patch and the root attributes strain_energy and
 // max_displacement. A T-spline model (igaprep-bezier-extraction) is solved
@@ -28,7 +28,7 @@ namespace igaprep::cli {
 namespace {
 
 struct SolveArgs {
-  std::string model, output, body_force, rotation, solver = "cholesky";
+  std::string model, output, body_force, rotation, solver = "auto";
   std::vector<std::string> fix, pressure, traction, force;
   int refine = 0, elevate = 0;
   long long max_unknowns = iga_check::ElasticityOptions{}.max_unknowns;
@@ -105,9 +105,7 @@ int run_solve(const SolveArgs& a) {
   options.refine = a.refine;
   options.elevate = a.elevate;
   options.max_unknowns = a.max_unknowns;
-  if (a.solver == "cholesky") options.solver = iga_check::LinearSolver::Cholesky;
-  else if (a.solver == "cg") options.solver = iga_check::LinearSolver::ConjugateGradient;
-  else throw bad_input("--solver must be 'cholesky' or 'cg', got '" + a.solver + "'");
+  options.solver = iga_check::linear_solver_named(a.solver);
   if (problem.fixed.empty())
     throw bad_input("no constraints: give --fix LABEL[:COMPONENTS] so that no rigid-body motion is left free");
 
@@ -169,7 +167,7 @@ void add_solve_command(CLI::App& app) {
   sub->add_option("--max-unknowns", args->max_unknowns,
                   "Refuse a refined model with more unknowns than this (estimated first; default 1000000)")
       ->check(positive_number());
-  sub->add_option("--solver", args->solver, "Linear solver: cholesky (CHOLMOD when present) or cg");
+  sub->add_option("--solver", args->solver, "Linear solver: auto (cholesky up to 30,000 unknowns, amg above), cholesky (CHOLMOD when present), cg (incomplete Cholesky) or amg (BoomerAMG)");
   set_body(sub, [args] { return run_solve(*args); });
 }
 

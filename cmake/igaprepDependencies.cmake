@@ -2,10 +2,10 @@
 # imported targets for those that ship no usable CMake package.
 # Used by the build (everything) and by the installed igaprepConfig.cmake,
 # which sets IGAPREP_NEEDED_DEPENDENCIES to what the asked components need
-# (eigen, cgal, tetgen, hdf5, ceres, cholmod, json, openssl).
+# (eigen, cgal, tetgen, hdf5, ceres, cholmod, hypre, json, openssl).
 include(CMakeFindDependencyMacro)
 if(NOT DEFINED IGAPREP_NEEDED_DEPENDENCIES)
-  set(IGAPREP_NEEDED_DEPENDENCIES eigen cgal tetgen hdf5 ceres cholmod json openssl)
+  set(IGAPREP_NEEDED_DEPENDENCIES eigen cgal tetgen hdf5 ceres cholmod hypre json openssl)
 endif()
 macro(igaprep_needs dependency result)
   list(FIND IGAPREP_NEEDED_DEPENDENCIES ${dependency} _igaprep_at)
@@ -98,4 +98,22 @@ if(_igaprep_need AND NOT TARGET igaprep_dep_cholmod)
   else()
     set(IGAPREP_HAVE_CHOLMOD OFF)
   endif()
+endif()
+
+# hypre (libhypre-dev): BoomerAMG for the elasticity solver's large
+# problems. Debian builds it on Open MPI; igaprep runs it in one process
+# (MPI_COMM_SELF) and never needs the MPI C++ bindings.
+igaprep_needs(hypre _igaprep_need)
+if(_igaprep_need AND NOT TARGET igaprep_dep_hypre)
+  if(NOT CMAKE_C_COMPILER_LOADED)
+    enable_language(C)
+  endif()
+  find_dependency(MPI COMPONENTS C)
+  find_path(IGAPREP_HYPRE_INCLUDE_DIR HYPRE.h PATH_SUFFIXES hypre REQUIRED)
+  find_library(IGAPREP_HYPRE_LIBRARY NAMES HYPRE REQUIRED)
+  add_library(igaprep_dep_hypre INTERFACE IMPORTED)
+  set_target_properties(igaprep_dep_hypre PROPERTIES
+    INTERFACE_INCLUDE_DIRECTORIES "${IGAPREP_HYPRE_INCLUDE_DIR}"
+    INTERFACE_LINK_LIBRARIES "${IGAPREP_HYPRE_LIBRARY};MPI::MPI_C"
+    INTERFACE_COMPILE_DEFINITIONS OMPI_SKIP_MPICXX)
 endif()

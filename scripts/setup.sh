@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 PACKAGES=(
   build-essential cmake pkg-config
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
-  libtet1.5-dev libhdf5-dev libosd-dev libsuitesparse-dev libopenblas0-pthread
+  libtet1.5-dev libhdf5-dev libosd-dev libsuitesparse-dev libhypre-dev libopenblas0-pthread
   libceres-dev libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev libssl-dev
   python3 python3-dev pybind11-dev python3-numpy python3-scipy python3-h5py python3-vtk9
   python3-pytest python3-matplotlib xvfb xauth chromium

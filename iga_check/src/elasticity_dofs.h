@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "elasticity_amg.h"
 #include "elasticity_prescribed.h"
 #include "igaprep/iga_check/elasticity_problem.h"
 #include "igaprep/spline/multipatch.h"
@@ -29,5 +30,9 @@ struct ElasticityDofs {
 // (check_rigid_modes).
 ElasticityDofs constrain_dofs(const spline::MultiPatch& mp, spline::GlobalNumbering numbering,
                               const PrescribedValues& prescribed, const std::vector<FixedSide>& fixed);
+
+// The unknowns by control point for the AMG preconditioner: dofs.equation
+// and each distinct control point's position.
+NodalLayout nodal_layout(const spline::MultiPatch& mp, const ElasticityDofs& dofs);
 
 }  // namespace igaprep::iga_check::detail

@@ -60,10 +60,31 @@ Eigen::VectorXd solve_cg(const SparseMatrix& K, const Eigen::VectorXd& F, const 
 
 }  // namespace
 
-Eigen::VectorXd solve_linear_system(const SparseMatrix& K, const Eigen::VectorXd& F, const ElasticityOptions& options,
-                                    ElasticityReport& report) {
+}  // namespace igaprep::iga_check::detail
+
+namespace igaprep::iga_check {
+
+LinearSolver linear_solver_named(const std::string& name) {
+  if (name == "auto") return LinearSolver::Automatic;
+  if (name == "cholesky") return LinearSolver::Cholesky;
+  if (name == "cg") return LinearSolver::ConjugateGradient;
+  if (name == "amg") return LinearSolver::Amg;
+  throw bad_input("the linear solver must be 'auto', 'cholesky', 'cg' or 'amg', got '" + name + "'");
+}
+
+}  // namespace igaprep::iga_check
+
+namespace igaprep::iga_check::detail {
+
+Eigen::VectorXd solve_linear_system(const SparseMatrix& K, const Eigen::VectorXd& F, const NodalLayout& layout,
+                                    const ElasticityOptions& options, ElasticityReport& report) {
   if (F.size() == 0) return Eigen::VectorXd::Zero(0);
-  if (options.solver == LinearSolver::Cholesky) return solve_cholesky(K, F, report);
+  LinearSolver solver = options.solver;
+  if (solver == LinearSolver::Automatic)
+    solver = F.size() > options.direct_max_unknowns ? LinearSolver::Amg : LinearSolver::Cholesky;
+  if (solver == LinearSolver::Cholesky) return solve_cholesky(K, F, report);
+  if (solver == LinearSolver::Amg)
+    return solve_amg(K, F, layout, options.cg_tolerance, options.cg_max_iterations, report);
   return solve_cg(K, F, options, report);
 }
 

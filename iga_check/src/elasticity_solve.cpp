@@ -51,7 +51,7 @@ ElasticitySolution solve_elasticity(const spline::MultiPatch& input, const Elast
   rep.assembly_seconds = seconds_since(t_assembly);
 
   const auto t_solve = Clock::now();
-  const Eigen::VectorXd u = detail::solve_linear_system(system.matrix, F, options, rep);
+  const Eigen::VectorXd u = detail::solve_linear_system(system.matrix, F, detail::nodal_layout(mp, dofs), options, rep);
   rep.solve_seconds = seconds_since(t_solve);
   detail::store_solution(u, dofs, system, sol.model, rep);
   return sol;

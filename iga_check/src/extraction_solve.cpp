@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <set>
 #include <string>
 
@@ -293,7 +294,9 @@ ExtractionSolution solve_elasticity(const spline::ExtractionModel& model, const 
   out.report.nonzeros = K.nonZeros();
   out.report.assembly_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const auto solve_start = std::chrono::steady_clock::now();
-  Eigen::VectorXd u = detail::solve_linear_system(K, F, options, out.report);
+  detail::NodalLayout layout{std::vector<int>(static_cast<std::size_t>(dofs)), model.control_points};
+  std::iota(layout.row_of.begin(), layout.row_of.end(), 0);  // constraints are rows of K already
+  Eigen::VectorXd u = detail::solve_linear_system(K, F, layout, options, out.report);
   for (Eigen::Index i = 0; i < dofs; ++i)
     if (c.set[static_cast<std::size_t>(i)]) u[i] = c.value[i];  // exactly, whatever the solver's tolerance
   out.report.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - solve_start).count();

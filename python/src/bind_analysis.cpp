@@ -67,8 +67,7 @@ py::dict solve(const spline::MultiPatch& model, const py::object& fix, const std
   problem.rotation = rotation_load(rotation);
   iga_check::ElasticityOptions options;
   options.refine = refine;
-  if (solver != "cholesky" && solver != "cg") throw bad_input("solver must be 'cholesky' or 'cg', got '" + solver + "'");
-  options.solver = solver == "cg" ? iga_check::LinearSolver::ConjugateGradient : iga_check::LinearSolver::Cholesky;
+  options.solver = iga_check::linear_solver_named(solver);
   iga_check::ElasticitySolution s;
   {
     py::gil_scoped_release release;
@@ -119,7 +118,7 @@ void bind_analysis(py::module_& m) {
         py::arg("traction") = std::map<std::string, Eigen::Vector3d>{},
         py::arg("force") = std::map<std::string, Eigen::Vector3d>{},
         py::arg("body_force") = Eigen::Vector3d::Zero().eval(), py::arg("rotation") = py::none(),
-        py::arg("refine") = 0, py::arg("solver") = "cholesky",
+        py::arg("refine") = 0, py::arg("solver") = "auto",
         "Linear elasticity on the model with its materials. fix: labels (all components) or {label: 'xz'};\n"
         "pressure: {label: p}; traction: {label: (tx, ty, tz)}; force: {label: (Fx, Fy, Fz)}, a total force\n"
         "spread over the label's sides; body_force per volume; rotation: {'density', 'angular_velocity',\n"

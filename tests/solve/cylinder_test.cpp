@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -77,4 +78,42 @@ TEST(SolveCylinder, TwoMaterialPlaneStrainMatchesLame) {
     const double work = 0.5 * kP * ex.ur(ka, 0) * kPi / 2 * ka * kH;
     EXPECT_NEAR(sol.report.strain_energy, work, 1e-4 * work);
   }
+}
+
+// Issue 22: the AMG-preconditioned CG and the direct solver on the composite
+// cylinder refined in every direction (two materials, symmetry rollers, four
+// patches with reoriented interfaces): the same strain energy and field.
+TEST(SolveCylinder, BoomerAmgAgreesWithCholesky) {
+  iga_check::ElasticityOptions options;
+  options.refine = 2;
+  options.cg_tolerance = 1e-12;
+  options.solver = iga_check::LinearSolver::Cholesky;
+  const auto direct = iga_check::solve_elasticity(composite_cylinder(3, 1), cylinder_problem(), options);
+  options.solver = iga_check::LinearSolver::Amg;
+  const auto amg = iga_check::solve_elasticity(composite_cylinder(3, 1), cylinder_problem(), options);
+  EXPECT_EQ(amg.report.solver, "boomeramg-pcg");
+  EXPECT_EQ(amg.report.unknowns, direct.report.unknowns);
+  EXPECT_GT(amg.report.cg_iterations, 0);
+  EXPECT_LT(amg.report.cg_residual, 1.25e-12);
+  std::printf("unknowns %lld: BoomerAMG %d iterations, energy %.15g (Cholesky %.15g)\n", amg.report.unknowns,
+              amg.report.cg_iterations, amg.report.strain_energy, direct.report.strain_energy);
+  EXPECT_NEAR(amg.report.strain_energy, direct.report.strain_energy, 1e-10 * direct.report.strain_energy);
+  double diff = 0.0;
+  for (std::size_t p = 0; p < 4; ++p)
+    diff = std::max(diff, (amg.model.patches[p].displacement - direct.model.patches[p].displacement).cwiseAbs().maxCoeff());
+  EXPECT_LT(diff, 1e-8 * direct.report.max_displacement);
+  const double work = cylinder_strain_energy();
+  EXPECT_NEAR(amg.report.strain_energy, work, 1e-4 * work);
+}
+
+// Automatic: the direct solver up to direct_max_unknowns, AMG above.
+TEST(SolveCylinder, AutomaticChoiceBySize) {
+  iga_check::ElasticityOptions options;
+  options.refine = 1;
+  const auto small = iga_check::solve_elasticity(composite_cylinder(3, 1), cylinder_problem(), options);
+  EXPECT_NE(small.report.solver, "boomeramg-pcg");
+  options.direct_max_unknowns = small.report.unknowns - 1;
+  const auto large = iga_check::solve_elasticity(composite_cylinder(3, 1), cylinder_problem(), options);
+  EXPECT_EQ(large.report.solver, "boomeramg-pcg");
+  EXPECT_NEAR(large.report.strain_energy, small.report.strain_energy, 1e-8 * small.report.strain_energy);
 }

@@ -79,16 +79,21 @@ struct ElasticityProblem {
   std::function<Eigen::Vector3d(const Eigen::Vector3d&)> body_force_function;
 };
 
-enum class LinearSolver { Cholesky, ConjugateGradient };
+// Automatic: Cholesky up to ElasticityOptions::direct_max_unknowns, Amg
+// above (docs/elasticity-solver.md, "Large problems").
+enum class LinearSolver { Automatic, Cholesky, ConjugateGradient, Amg };
+// "auto", "cholesky", "cg" or "amg"; throws bad_input naming the choices.
+LinearSolver linear_solver_named(const std::string& name);
 
 struct ElasticityOptions {
   int refine = 0;   // uniform h-refinement levels: each level bisects every knot span
   int elevate = 0;  // degree elevation in every direction (applied before refine)
   // Gauss points per direction: degree + 1 + extra_quadrature.
   int extra_quadrature = 0;
-  LinearSolver solver = LinearSolver::Cholesky;
-  double cg_tolerance = 1e-8;   // relative residual for LinearSolver::ConjugateGradient
-  int cg_max_iterations = 0;    // 0: 10 * unknowns
+  LinearSolver solver = LinearSolver::Automatic;
+  long long direct_max_unknowns = 30'000;  // LinearSolver::Automatic's switch to Amg
+  double cg_tolerance = 1e-8;   // relative residual for ConjugateGradient and Amg
+  int cg_max_iterations = 0;    // 0: 10 * unknowns (ConjugateGradient), 1,000 (Amg)
   // Refused before any work when the refined model would have more scalar
   // unknowns than this (estimated from the knot vectors, shared control
   // points counted once per patch): memory grows faster than the unknowns.

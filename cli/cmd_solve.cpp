@@ -167,7 +167,7 @@ void add_solve_command(CLI::App& app) {
   sub->add_option("--max-unknowns", args->max_unknowns,
                   "Refuse a refined model with more unknowns than this (estimated first; default 1000000)")
       ->check(positive_number());
-  sub->add_option("--solver", args->solver, "Linear solver: auto (cholesky up to 30,000 unknowns, amg above), cholesky (CHOLMOD when present), cg (incomplete Cholesky) or amg (BoomerAMG)");
+  sub->add_option("--solver", args->solver, "Linear solver: auto (cholesky up to 200,000 unknowns, amg above), cholesky (CHOLMOD when present), cg (incomplete Cholesky) or amg (BoomerAMG)");
   set_body(sub, [args] { return run_solve(*args); });
 }
 

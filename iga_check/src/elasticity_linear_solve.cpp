@@ -72,6 +72,16 @@ LinearSolver linear_solver_named(const std::string& name) {
   throw bad_input("the linear solver must be 'auto', 'cholesky', 'cg' or 'amg', got '" + name + "'");
 }
 
+const char* linear_solver_name(LinearSolver solver) {
+  switch (solver) {
+    case LinearSolver::Automatic: return "auto";
+    case LinearSolver::Cholesky: return "cholesky";
+    case LinearSolver::ConjugateGradient: return "cg";
+    case LinearSolver::Amg: return "amg";
+  }
+  return "auto";
+}
+
 }  // namespace igaprep::iga_check
 
 namespace igaprep::iga_check::detail {

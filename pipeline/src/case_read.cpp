@@ -98,10 +98,12 @@ std::vector<std::string> read_export(const json& v, const std::string& file) {
   return out;
 }
 
-SolverChoice read_solver(ObjectReader& r, SolverChoice fallback) {
-  const std::string name = r.string("solver", fallback == SolverChoice::Cholesky ? "cholesky" : "cg");
-  if (name != "cg" && name != "cholesky") r.fail("'" + r.path("solver") + "' must be \"cg\" or \"cholesky\"");
-  return name == "cg" ? SolverChoice::ConjugateGradient : SolverChoice::Cholesky;
+iga_check::LinearSolver read_solver(ObjectReader& r, iga_check::LinearSolver fallback) {
+  const std::string name = r.string("solver", iga_check::linear_solver_name(fallback));
+  for (const auto s : {iga_check::LinearSolver::Automatic, iga_check::LinearSolver::Cholesky,
+                       iga_check::LinearSolver::ConjugateGradient, iga_check::LinearSolver::Amg})
+    if (name == iga_check::linear_solver_name(s)) return s;
+  r.fail("'" + r.path("solver") + "' must be \"auto\", \"cholesky\", \"cg\" or \"amg\"");
 }
 
 // Reads "label" and optional "box" of a load-case entry.

@@ -15,8 +15,6 @@ std::string relative(const std::string& path, const std::string& to) {
   return to.empty() ? path : fs::path(path).lexically_relative(to).string();
 }
 
-const char* solver_name(SolverChoice s) { return s == SolverChoice::Cholesky ? "cholesky" : "cg"; }
-
 json surfaces_json(const Case& c, const std::string& relative_to) {
   json surfaces = json::array();
   for (const auto& s : c.surfaces) {
@@ -39,7 +37,7 @@ json surfaces_json(const Case& c, const std::string& relative_to) {
 
 json validation_json(const CaseValidation& v) {
   return {{"enabled", v.enabled}, {"coarse_refine", v.coarse_refine}, {"fine_refine", v.fine_refine},
-          {"patches", v.patches}, {"solver", solver_name(v.solver)}};
+          {"patches", v.patches}, {"solver", iga_check::linear_solver_name(v.solver)}};
 }
 
 json check_json(const iga_check::CheckOptions& o) {
@@ -101,7 +99,7 @@ json load_case_json(const CaseLoadCase& lc) {
   }
   json out{{"fix", fix}, {"pressure", pressure}, {"traction", traction}, {"force", force},
            {"body_force", {lc.body_force.x(), lc.body_force.y(), lc.body_force.z()}}, {"refine", lc.refine},
-           {"solver", solver_name(lc.solver)}};
+           {"solver", iga_check::linear_solver_name(lc.solver)}};
   if (const auto& r = lc.rotation)
     out["rotation"] = {{"density", r->density}, {"angular_velocity", r->angular_velocity},
                        {"axis", {r->axis.x(), r->axis.y(), r->axis.z()}},

@@ -33,10 +33,6 @@ bool in_box(const Eigen::Vector3d& x, const std::array<Eigen::Vector3d, 2>& box)
   return (x.array() >= box[0].array()).all() && (x.array() <= box[1].array()).all();
 }
 
-iga_check::LinearSolver linear_solver(SolverChoice s) {
-  return s == SolverChoice::Cholesky ? iga_check::LinearSolver::Cholesky : iga_check::LinearSolver::ConjugateGradient;
-}
-
 int min_degree(const spline::MultiPatch& mp) {
   int p = std::numeric_limits<int>::max();
   for (const auto& patch : mp.patches)
@@ -68,7 +64,7 @@ iga_check::PipelineValidation validation_stage(const spline::MultiPatch& mp, con
     iga_check::ManufacturedOptions mo;
     mo.coarse_refine = options.coarse_refine;
     mo.fine_refine = options.fine_refine;
-    mo.solver = linear_solver(options.solver);
+    mo.solver = options.solver;
     mo.progress = progress_to(observer);
     try {
       // Also for the whole model: collapsed sides then get the cut label.
@@ -201,7 +197,7 @@ LoadCaseResult load_case_stage(const spline::MultiPatch& mp, const CaseLoadCase&
   problem.rotation = lc.rotation;
   iga_check::ElasticityOptions options;
   options.refine = lc.refine;
-  options.solver = linear_solver(lc.solver);
+  options.solver = lc.solver;
   options.progress = progress_to(observer);
   LoadCaseResult r;
   r.solution = iga_check::solve_elasticity(lab.model, problem, options);

@@ -176,7 +176,7 @@ TEST(Case, ValuesAreReadAndPathsResolved) {
   EXPECT_EQ(c.surface_fit.smoothing, 0.5);
   EXPECT_EQ(c.midsurface.cut, igaprep::param::MidsurfaceOptions::CutKind::Plane);
   EXPECT_EQ(c.midsurface.plane.normal.z(), 2.0);
-  EXPECT_EQ(c.validation.solver, igaprep::pipeline::SolverChoice::ConjugateGradient);
+  EXPECT_EQ(c.validation.solver, igaprep::iga_check::LinearSolver::ConjugateGradient);
   EXPECT_EQ(c.validation.patches, 0);
   EXPECT_EQ(c.materials.at(1).young_modulus, 100.0);
 }

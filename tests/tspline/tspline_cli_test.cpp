@@ -174,7 +174,7 @@ TEST(TSplineCli, SurfaceAndToleranceComeTogetherAndExcludeRefineBoxes) {
 // elements per direction, tolerance 0.115 % of the diagonal, 3 rounds)
 // is at least as close to the surface as the uniform B-spline model of
 // the default 6 elements, with at most half its control points (measured
-// 2026-12-04: 40,756 against 89,278, ratio 0.457; fidelity 0.152 % against
+// 2026-12-05: 40,602 against 89,278, ratio 0.455; fidelity 0.152 % against
 // 0.159 %). About 2.5 minutes: two runs and the fit.
 TEST(TSplineCli, Torus3FitDrivenReachesTheUniformFidelityWithHalfTheControlPoints) {
   const std::string dir = scratch_dir("tspline_torus3");

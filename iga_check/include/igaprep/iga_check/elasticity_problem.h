@@ -84,6 +84,7 @@ struct ElasticityProblem {
 enum class LinearSolver { Automatic, Cholesky, ConjugateGradient, Amg };
 // "auto", "cholesky", "cg" or "amg"; throws bad_input naming the choices.
 LinearSolver linear_solver_named(const std::string& name);
+const char* linear_solver_name(LinearSolver solver);
 
 struct ElasticityOptions {
   int refine = 0;   // uniform h-refinement levels: each level bisects every knot span
@@ -91,7 +92,7 @@ struct ElasticityOptions {
   // Gauss points per direction: degree + 1 + extra_quadrature.
   int extra_quadrature = 0;
   LinearSolver solver = LinearSolver::Automatic;
-  long long direct_max_unknowns = 30'000;  // LinearSolver::Automatic's switch to Amg
+  long long direct_max_unknowns = 200'000;  // LinearSolver::Automatic's switch to Amg (docs)
   double cg_tolerance = 1e-8;   // relative residual for ConjugateGradient and Amg
   int cg_max_iterations = 0;    // 0: 10 * unknowns (ConjugateGradient), 1,000 (Amg)
   // Refused before any work when the refined model would have more scalar

@@ -41,8 +41,6 @@ struct CaseMaterial {
   double poisson_ratio = 0.0;
 };
 
-enum class SolverChoice { Cholesky, ConjugateGradient };
-
 // Section "validation": the manufactured-solution study of a run. It runs on
 // a connected set of at most `patches` patches (0 = the whole model), grown
 // from the certified patch with the smallest scaled Jacobian, so its cost
@@ -52,7 +50,7 @@ struct CaseValidation {
   int coarse_refine = 0;
   int fine_refine = 1;
   int patches = 4;
-  SolverChoice solver = SolverChoice::Cholesky;  // CHOLMOD when present
+  iga_check::LinearSolver solver = iga_check::LinearSolver::Cholesky;  // CHOLMOD when present
 };
 
 // A labelled boundary, optionally only its sides whose centre (the mean of
@@ -92,7 +90,7 @@ struct CaseLoadCase {
   Eigen::Vector3d body_force = Eigen::Vector3d::Zero();
   std::optional<iga_check::RotationLoad> rotation;
   int refine = 0;
-  SolverChoice solver = SolverChoice::Cholesky;
+  iga_check::LinearSolver solver = iga_check::LinearSolver::Automatic;  // Cholesky, or AMG above 200,000 unknowns
 };
 
 struct Case {

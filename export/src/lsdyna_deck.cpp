@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "bext_parts.h"
+#include "lsdyna_deck.h"
 #include "igaprep/core/error.h"
 #include "igaprep/export/bext.h"
 #include "igaprep/spline/curve_surface.h"
@@ -48,46 +49,57 @@ std::vector<long long> label_nodes(const spline::MultiPatch& model, const detail
   return {nodes.begin(), nodes.end()};
 }
 
-void write_part(const spline::MultiPatch& model, const detail::BextPart& part, const std::string& file, std::ostream& out) {
-  const spline::Material& mat = model.materials[static_cast<std::size_t>(part.material)];
-  out << "*PART\n$# title\n" << title(mat.name.empty() ? "material " + std::to_string(part.material) : mat.name) << "\n";
-  out << "$#     pid     secid       mid\n" << field(static_cast<long long>(part.pid)) << field(static_cast<long long>(part.pid))
-      << field(static_cast<long long>(part.pid)) << "\n";
-  out << "*SECTION_IGA_SOLID\n$#   secid\n" << field(static_cast<long long>(part.pid)) << "\n";
-  out << "*MAT_ELASTIC\n$#     mid        ro         e        pr\n" << field(static_cast<long long>(part.pid))
+void write_part(const spline::Material& mat, int material, int pid, const std::string& file, std::ostream& out) {
+  out << "*PART\n$# title\n" << title(mat.name.empty() ? "material " + std::to_string(material) : mat.name) << "\n";
+  out << "$#     pid     secid       mid\n" << field(static_cast<long long>(pid)) << field(static_cast<long long>(pid))
+      << field(static_cast<long long>(pid)) << "\n";
+  out << "*SECTION_IGA_SOLID\n$#   secid\n" << field(static_cast<long long>(pid)) << "\n";
+  out << "*MAT_ELASTIC\n$#     mid        ro         e        pr\n" << field(static_cast<long long>(pid))
       << field(1.0) << field(mat.young_modulus) << field(mat.poisson_ratio) << "\n";
   out << "*IGA_INCLUDE_BEZIER\n" << file << "\n$#    type       pid       dim\n" << field(1LL)
-      << field(static_cast<long long>(part.pid)) << field(3LL) << "\n";
+      << field(static_cast<long long>(pid)) << field(3LL) << "\n";
 }
 
 }  // namespace
 
-void write_lsdyna_deck(const spline::MultiPatch& model, const std::vector<std::string>& part_files, std::ostream& out) {
-  detail::check_model_for_writing(model, "LS-DYNA deck");
-  const std::vector<detail::BextPart> parts = detail::bext_parts(model);
-  if (part_files.size() != parts.size())
+namespace detail {
+
+void write_deck(const std::string& heading, const std::vector<spline::Material>& materials,
+                const std::vector<std::string>& part_files, const std::vector<DeckNodeSet>& sets, std::ostream& out) {
+  if (part_files.size() != materials.size())
     throw bad_input("LS-DYNA deck: " + std::to_string(part_files.size()) + " part files for " +
-                    std::to_string(parts.size()) + " materials");
-  out << "*KEYWORD\n*TITLE\n"
-      << title("igaprep model: " + std::to_string(model.patches.size()) + " patches, " +
-               std::to_string(parts.size()) + " parts (one per material)")
-      << "\n";
+                    std::to_string(materials.size()) + " materials");
+  out << "*KEYWORD\n*TITLE\n" << title(heading) << "\n";
   out << "$ Units are the model's (E in them). RO (density) is not in the model: 1.0 is written, set it\n"
          "$ for dynamics. Parts share no nodes: each BEXT file numbers its control points 1..n,\n"
          "$ and the node sets below use those numbers (docs/export-formats.md).\n";
-  for (std::size_t m = 0; m < parts.size(); ++m) write_part(model, parts[m], part_files[m], out);
+  for (std::size_t m = 0; m < materials.size(); ++m)
+    write_part(materials[m], static_cast<int>(m), static_cast<int>(m) + 1, part_files[m], out);
   long long sid = 0;
-  for (std::size_t label = 0; label < model.labels.size(); ++label)
-    for (const detail::BextPart& part : parts) {
-      const std::vector<long long> nodes = label_nodes(model, part, static_cast<int>(label));
-      if (nodes.empty()) continue;
-      out << "*SET_NODE_LIST_TITLE\n"
-          << title(model.labels[label] + " (part " + std::to_string(part.pid) + ", " + part_files[static_cast<std::size_t>(part.material)] + ")")
-          << "\n$#     sid\n"
-          << field(++sid) << "\n";
-      for (std::size_t i = 0; i < nodes.size(); ++i) out << field(nodes[i]) << ((i + 1) % 8 == 0 || i + 1 == nodes.size() ? "\n" : "");
-    }
+  for (const DeckNodeSet& set : sets) {
+    if (set.nodes.empty()) continue;
+    out << "*SET_NODE_LIST_TITLE\n"
+        << title(set.label + " (part " + std::to_string(set.pid) + ", " + part_files[static_cast<std::size_t>(set.pid - 1)] + ")")
+        << "\n$#     sid\n"
+        << field(++sid) << "\n";
+    for (std::size_t i = 0; i < set.nodes.size(); ++i)
+      out << field(set.nodes[i]) << ((i + 1) % 8 == 0 || i + 1 == set.nodes.size() ? "\n" : "");
+  }
   out << "*END\n";
+}
+
+}  // namespace detail
+
+void write_lsdyna_deck(const spline::MultiPatch& model, const std::vector<std::string>& part_files, std::ostream& out) {
+  detail::check_model_for_writing(model, "LS-DYNA deck");
+  const std::vector<detail::BextPart> parts = detail::bext_parts(model);
+  std::vector<detail::DeckNodeSet> sets;
+  for (std::size_t label = 0; label < model.labels.size(); ++label)
+    for (const detail::BextPart& part : parts)
+      sets.push_back({model.labels[label], part.pid, label_nodes(model, part, static_cast<int>(label))});
+  detail::write_deck("igaprep model: " + std::to_string(model.patches.size()) + " patches, " +
+                         std::to_string(parts.size()) + " parts (one per material)",
+                     model.materials, part_files, sets, out);
 }
 
 }  // namespace igaprep::exporter

@@ -40,9 +40,12 @@ detail::Grid extraction_grid(const spline::ExtractionModel& m) {
 
 }  // namespace
 
+void write_vtu_bezier(const spline::ExtractionModel& model, std::ostream& out) {
+  detail::write_grid(out, extraction_grid(model), VtuOptions{});
+}
+
 void write_vtu_bezier(const spline::ExtractionModel& model, const std::string& path) {
-  const detail::Grid g = extraction_grid(model);
-  write_file_atomically(path, [&](std::ostream& out) { detail::write_grid(out, g, VtuOptions{}); }, true);
+  write_file_atomically(path, [&](std::ostream& out) { write_vtu_bezier(model, out); }, true);
 }
 
 }  // namespace igaprep::exporter

@@ -1,5 +1,6 @@
 """Independent reader of BEXT 2.0 ASCII files (the layout docs/export-formats.md
-documents: one part per file, dense coefficient blocks).
+documents: one part per file, dense coefficient blocks; element blocks of any
+number of functions per element, as a T-spline's).
 
 Usage: read_bext.py FILE.bext
 Reconstructs every element's Bernstein control points as C^T times its nodes
@@ -38,7 +39,10 @@ def main():
     blocks = [take(7, int) for _ in range(neb)]
     elements = []
     for b, (etype, ne, nn, ncv, pr, ps, pt) in enumerate(blocks):
-        assert etype == 1 and nn == ncv == (pr + 1) * (ps + 1) * (pt + 1)
+        # nn: the element's functions; (pr+1)(ps+1)(pt+1) for a tensor patch,
+        # any count for a T-spline's element block (checked against the
+        # vectors' length below).
+        assert etype == 1 and nn == ncv
         for i in range(ne):
             ids = take(nn, int)
             vecs = take(ncv, int)
@@ -54,6 +58,8 @@ def main():
     assert len(elements) == numel
     out = []
     for e in elements:
+        pr, ps, pt = e["degrees"]
+        assert all(len(vectors[v - 1]) == (pr + 1) * (ps + 1) * (pt + 1) for v in e["vecs"]), "vector length"
         C = np.array([vectors[v - 1] for v in e["vecs"]])  # rows: the element's nodes in order
         P = nodes[[i - 1 for i in e["ids"]]]
         hom = np.column_stack([P[:, :3] * P[:, 3:4], P[:, 3]])

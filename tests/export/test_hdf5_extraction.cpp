@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "igaprep/core/error.h"
+#include "igaprep/export/export_model.h"
 #include "igaprep/export/hdf5_extraction.h"
 #include "igaprep/export/hdf5_model.h"
 #include "igaprep/export/vtu_bezier.h"
@@ -139,8 +140,22 @@ TEST(Hdf5Extraction, ItsVtuHasTheMultipatchsCellsAndPoints) {
   igaprep::exporter::write_hdf5_extraction(spline::extraction_model(mp), dir + "/t.h5");
   const CommandResult r = run_command(std::string(IGAPREP_CLI) + " export " + dir + "/t.h5 --to vtu -o " + dir + "/t 2>&1");
   ASSERT_EQ(r.status, 0) << r.output;
-  const CommandResult bad = run_command(std::string(IGAPREP_CLI) + " export " + dir + "/t.h5 --to bext -o " + dir + "/t 2>&1");
+  // Formats of tensor-product patches are refused; BEXT is written (read
+  // back in tests/tspline/tspline_cli_test.cpp), as many elements as the
+  // multipatch's part by part.
+  const CommandResult bad = run_command(std::string(IGAPREP_CLI) + " export " + dir + "/t.h5 --to gismo -o " + dir + "/t 2>&1");
   EXPECT_EQ(WEXITSTATUS(bad.status), 1) << bad.output;
+  EXPECT_NE(bad.output.find("written as vtu or bext, not gismo"), std::string::npos) << bad.output;
+  const CommandResult bext = run_command(std::string(IGAPREP_CLI) + " export " + dir + "/t.h5 --to bext -o " + dir + "/t 2>&1");
+  ASSERT_EQ(bext.status, 0) << bext.output;
+  igaprep::exporter::export_model(mp, dir + "/m", {igaprep::exporter::Format::Bext});
+  for (const std::string part : {"_part1.bext", "_part2.bext"}) {
+    const CommandResult a = run_python("read_bext.py", {dir + "/m" + part}), b = run_python("read_bext.py", {dir + "/t" + part});
+    ASSERT_EQ(a.status, 0) << a.output.substr(0, 1000);
+    ASSERT_EQ(b.status, 0) << b.output.substr(0, 1000);
+    EXPECT_EQ(nlohmann::json::parse(a.output)["elements"].size(), nlohmann::json::parse(b.output)["elements"].size()) << part;
+    EXPECT_EQ(nlohmann::json::parse(a.output)["nodes"], nlohmann::json::parse(b.output)["nodes"]) << part;
+  }
   const std::string script =
       "import vtk, numpy as np\n"
       "from vtk.util.numpy_support import vtk_to_numpy\n"

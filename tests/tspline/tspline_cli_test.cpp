@@ -11,8 +11,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <random>
+#include <set>
 #include <sstream>
 #include <utility>
 
@@ -63,6 +66,50 @@ void expect_fitted_tspline(const std::string& run, const std::string& case_file)
   const CommandResult strict = run_command(cli(check_args + " --fidelity-limit 0.01"));
   EXPECT_EQ(WEXITSTATUS(strict.status), 2) << strict.output;
   EXPECT_NE(strict.output.find("FAIL: fidelity outer: "), std::string::npos) << strict.output;
+}
+
+// `igaprep export --to bext` of a refined model: the independent reader
+// (tests/export/read_bext.py) rebuilds every element's Bernstein points from
+// each material's part file, equal to ours (matched by their centroids);
+// the deck has a node set of the outer surface's functions.
+void expect_bext_reproduces_the_elements(const spline::ExtractionModel& t, const std::string& dir) {
+  const CommandResult ex = run_command(cli("export " + dir + "/t.h5 --to bext -o " + dir + "/t"));
+  ASSERT_EQ(ex.status, 0) << ex.output;
+  std::map<std::array<long long, 3>, Eigen::MatrixXd> ours;  // rounded centroid -> Bernstein points
+  for (int e = 0; e < static_cast<int>(t.elements.size()); ++e) {
+    const Eigen::MatrixXd P = spline::bernstein_element(t, e).points;
+    const Eigen::RowVector3d c = P.colwise().mean();
+    ours[{std::llround(c[0] * 1e8), std::llround(c[1] * 1e8), std::llround(c[2] * 1e8)}] = P;
+  }
+  ASSERT_EQ(ours.size(), t.elements.size());
+  double worst = 0.0;
+  std::size_t read = 0;
+  std::set<int> node_counts;
+  for (int pid = 1; pid <= static_cast<int>(t.materials.size()); ++pid) {
+    const CommandResult py = run_python("read_bext.py", {dir + "/t_part" + std::to_string(pid) + ".bext"});
+    ASSERT_EQ(py.status, 0) << py.output.substr(0, 2000);
+    const nlohmann::json j = nlohmann::json::parse(py.output);
+    for (const auto& e : j["elements"]) {
+      Eigen::MatrixXd P(static_cast<Eigen::Index>(e["points"].size()), 3);
+      for (Eigen::Index r = 0; r < P.rows(); ++r)
+        for (int c = 0; c < 3; ++c) P(r, c) = e["points"][static_cast<std::size_t>(r)][static_cast<std::size_t>(c)].get<double>();
+      const Eigen::RowVector3d c = P.colwise().mean();
+      const auto at = ours.find({std::llround(c[0] * 1e8), std::llround(c[1] * 1e8), std::llround(c[2] * 1e8)});
+      ASSERT_NE(at, ours.end()) << "an element of part " << pid << " that the model does not have";
+      worst = std::max(worst, (P - at->second).cwiseAbs().maxCoeff());
+      node_counts.insert(static_cast<int>(e["nodes"].size()));
+      ++read;
+    }
+  }
+  EXPECT_EQ(read, t.elements.size());
+  EXPECT_LT(worst, 1e-12 * 2.0);
+  // Analysis-suitable T-splines are locally linearly independent: each
+  // element holds exactly (p + 1)^3 functions, T-junctions or not.
+  EXPECT_EQ(node_counts, std::set<int>{64});
+  std::ifstream deck(dir + "/t.k");
+  const std::string text((std::istreambuf_iterator<char>(deck)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("*SET_NODE_LIST_TITLE\nouter (part 1, t_part1.bext)"), std::string::npos) << text.substr(0, 2000);
+  EXPECT_NE(text.find("*IGA_INCLUDE_BEZIER\nt_part2.bext\n"), std::string::npos);
 }
 
 TEST(TSplineCli, RefinedSphere2IsReadBackCertifiedAndViewable) {
@@ -120,6 +167,7 @@ TEST(TSplineCli, RefinedSphere2IsReadBackCertifiedAndViewable) {
                                         dir + "/t.vtu'); r.Update(); print(r.GetOutput().GetNumberOfCells())\"");
   ASSERT_EQ(vtk.status, 0) << vtk.output;
   EXPECT_EQ(std::stol(vtk.output), static_cast<long>(t.elements.size()));
+  expect_bext_reproduces_the_elements(t, dir);
   // `igaprep solve` with the same flags: the unrefined T-spline gives the
   // multipatch's strain energy, the refined one a little more (a larger
   // space under a load), and the result file carries u per function.

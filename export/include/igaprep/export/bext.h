@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "igaprep/spline/extraction_model.h"
 #include "igaprep/spline/multipatch.h"
 
 namespace igaprep::exporter {
@@ -26,6 +27,13 @@ void write_bext_part(const spline::MultiPatch& model, int material, std::ostream
 // *IGA_INCLUDE_BEZIER per material (part_files[m] the file name the deck
 // refers to, relative to the deck), *SET_NODE_LIST per boundary label and part.
 void write_lsdyna_deck(const spline::MultiPatch& model, const std::vector<std::string>& part_files, std::ostream& out);
+
+// The same for a model in Bezier-extraction form (a T-spline): a part is a
+// material's elements, its nodes the functions they use; elements are
+// grouped into element blocks by degrees and number of functions (a block
+// holds one node count); node sets from the labelled boundary faces.
+void write_bext_part(const spline::ExtractionModel& model, int material, std::ostream& out);
+void write_lsdyna_deck(const spline::ExtractionModel& model, const std::vector<std::string>& part_files, std::ostream& out);
 
 // export_model (export_model.h) writes all of bext_paths at once.
 

@@ -9,6 +9,7 @@
 
 #include "igaprep/core/progress.h"
 #include "igaprep/export/vtu_bezier.h"
+#include "igaprep/spline/extraction_model.h"
 #include "igaprep/spline/multipatch.h"
 
 namespace igaprep::exporter {
@@ -33,5 +34,12 @@ std::vector<std::string> format_paths(const std::string& basename, Format f, int
 std::vector<std::string> export_model(const spline::MultiPatch& model, const std::string& basename,
                                       const std::vector<Format>& formats, const VtuOptions& vtu = {},
                                       const ProgressCallback& progress = {});
+
+// The same for a model in Bezier-extraction form (a T-spline): vtu (only
+// BASENAME.vtu: no boundary file) and bext. The other formats hold
+// tensor-product patches, and asking for one throws bad_input before any
+// file is written.
+std::vector<std::string> export_extraction_model(const spline::ExtractionModel& model, const std::string& basename,
+                                                 const std::vector<Format>& formats);
 
 }  // namespace igaprep::exporter

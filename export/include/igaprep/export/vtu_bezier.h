@@ -53,6 +53,7 @@ void write_vtu_bezier(const spline::MultiPatch& model, const std::string& path,
 // element from spline::bernstein_element, cell data "patch" and "element"
 // from the element's provenance (-1 and 0 when it has none).
 void write_vtu_bezier(const spline::ExtractionModel& model, const std::string& path);  // atomic
+void write_vtu_bezier(const spline::ExtractionModel& model, std::ostream& out);
 
 // VTK's point index of Bernstein node (i, j, k) of a hexahedron of the given
 // degrees (vtkHigherOrderHexahedron::PointIndexFromIJK, VTK 9 numbering).

@@ -56,7 +56,8 @@ TEST(Case, BadKeysAreRefusedByName) {
       {R"(, "validation": {"coarse": 1})", "unknown key 'validation.coarse'"},
       {R"(, "validation": {"coarse_refine": 2, "fine_refine": 1})", "'validation.fine_refine' must be greater"},
       {R"(, "validation": {"patches": -1})", "'validation.patches' must lie in"},
-      {R"(, "validation": {"solver": "lu"})", "'validation.solver'"},
+      {R"(, "validation": {"solver": "lu"})", "'validation.solver' must be \"auto\", \"cholesky\", \"cg\" or \"amg\""},
+      {R"(, "load_case": {"fix": "outer", "solver": "hypre"})", "'load_case.solver' must be \"auto\""},
       {R"(, "validation": {"enabled": 1})", "'validation.enabled' must be true or false"},
       {R"(, "load_case": {"pressure": {"label": "outer", "value": 1}})", "missing key 'load_case.fix'"},
       {R"(, "load_case": {"fix": "outer", "pressure": {"label": "outer"}})", "missing key 'load_case.pressure.value'"},
@@ -161,7 +162,7 @@ TEST(Case, RepeatedKeysLabelsHugeNumbersAndNonRegularFilesAreRefused) {
 TEST(Case, ValuesAreReadAndPathsResolved) {
   const Case c = parse_case(sphere2_case(R"(, "output": "out", "decomposition": {"inset": 0.4, "strategy": 1, "max_aspect": 3},
       "fit": {"elements": 4, "jacobian_target": 0, "surface_iterations": 3, "surface_smoothing": 0.5}, "midsurface": {"cut": {"plane": {"point": [0, 0, 0.1],
-      "normal": [0, 0, 2]}}}, "validation": {"solver": "cg", "patches": 0})"),
+      "normal": [0, 0, 2]}}}, "validation": {"solver": "cg", "patches": 0}, "load_case": {"fix": "outer", "solver": "amg"})"),
                             models_dir() + "/sphere2", "case.json");
   EXPECT_EQ(c.name, "sphere2-case");
   EXPECT_EQ(c.output_dir, models_dir() + "/sphere2/out");
@@ -178,7 +179,12 @@ TEST(Case, ValuesAreReadAndPathsResolved) {
   EXPECT_EQ(c.midsurface.plane.normal.z(), 2.0);
   EXPECT_EQ(c.validation.solver, igaprep::iga_check::LinearSolver::ConjugateGradient);
   EXPECT_EQ(c.validation.patches, 0);
+  EXPECT_EQ(c.load_case->solver, igaprep::iga_check::LinearSolver::Amg);
   EXPECT_EQ(c.materials.at(1).young_modulus, 100.0);
+  // Defaults: the study's direct solver, the load case's choice by size.
+  const Case d = parse_case(sphere2_case(R"(, "load_case": {"fix": "outer"})"), models_dir() + "/sphere2", "case.json");
+  EXPECT_EQ(d.validation.solver, igaprep::iga_check::LinearSolver::Cholesky);
+  EXPECT_EQ(d.load_case->solver, igaprep::iga_check::LinearSolver::Automatic);
 }
 
 // The built-in case made in memory is the committed case: same surfaces

@@ -229,6 +229,21 @@ TEST_F(SolveCli, ResultFileCarriesTheSolution) {
   }
 }
 
+// `--solver amg` (issue 22): the BoomerAMG-preconditioned CG, named with its
+// iterations in the output, gives the direct solve's energy.
+TEST_F(SolveCli, AmgSolverIsNamedAndAgreesWithTheDirectSolve) {
+  const std::string out = (dir_ / "amg.h5").string();
+  ASSERT_EQ(run("--fix base --traction end=1,0.5,-0.25 --refine 1 --solver amg", out), 0) << log();
+  EXPECT_NE(log().find("(boomeramg-pcg, "), std::string::npos) << log();
+  EXPECT_NE(log().find(" iterations)"), std::string::npos) << log();
+  iga_check::ElasticityOptions options;
+  options.refine = 1;
+  options.solver = iga_check::LinearSolver::Cholesky;
+  const auto direct = iga_check::solve_elasticity(two_box_bar(2), clamped_pulled(), options);
+  EXPECT_NEAR(exporter::read_hdf5_model(out).strain_energy, direct.report.strain_energy,
+              1e-8 * direct.report.strain_energy);
+}
+
 // The total force and the spin on the command line solve as through the
 // library: the bar's end carries 2 N in y (area 1), the bar spins about x.
 TEST_F(SolveCli, ForceAndRotationAreTheLibrarysLoads) {

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "igaprep/core/error.h"
+#include "igaprep/core/parallel.h"
 #include "igaprep/core/union_find.h"
 #include "igaprep/spline/tspline_functions.h"
 #include "igaprep/spline/tspline_model.h"
@@ -134,14 +135,17 @@ void add_boundary_faces(const TSplineModel& m, int patch, int first_element, con
 ExtractionModel extraction_model(const TSplineModel& model) {
   const MultiPatch& mp = model.base;
   const double scale = model_scale(mp);
-  std::vector<PatchCells> cells;
+  // Patches on all cores: each writes only its own cells (the same result on any thread count).
+  std::vector<PatchCells> cells(mp.patches.size());
+  parallel_for(mp.patches.size(), [&](std::size_t p) {
+    cells[p] = patch_cells(mp.patches[p], model.meshes[p], static_cast<int>(p));
+    if (model.meshes[p].refined()) check_reproduces_geometry(mp.patches[p], cells[p], static_cast<int>(p), 1e-10 * scale);
+  });
   std::vector<int> offset;
   int total = 0;
-  for (std::size_t p = 0; p < mp.patches.size(); ++p) {
-    cells.push_back(patch_cells(mp.patches[p], model.meshes[p], static_cast<int>(p)));
-    if (model.meshes[p].refined()) check_reproduces_geometry(mp.patches[p], cells.back(), static_cast<int>(p), 1e-10 * scale);
+  for (const PatchCells& c : cells) {
     offset.push_back(total);
-    total += static_cast<int>(cells.back().functions.size());
+    total += static_cast<int>(c.functions.size());
   }
   UnionFind classes(total);
   for (const Interface& itf : mp.interfaces) join_interface(model, itf, cells, offset, classes);

@@ -10,6 +10,7 @@
 #include <random>
 
 #include "igaprep/core/error.h"
+#include "igaprep/core/parallel.h"
 #include "igaprep/spline/basis.h"
 #include "igaprep/spline/evaluate.h"
 #include "igaprep/spline/extraction_model.h"
@@ -214,6 +215,26 @@ TEST(TSpline, RefinementAtAnInterfaceIsMirroredAndTheSpaceStaysC0) {
     jump = std::max(jump, std::abs(field_at(m, 0, {1.0, v, w}, c) - field_at(m, 1, {1.0 - v, w, 0.0}, c)));
   }
   EXPECT_LT(jump, 1e-12);
+}
+
+// The patches' cells are made on all cores: one thread or two give the same
+// extraction bit for bit.
+TEST(TSpline, OneOrTwoThreadsGiveTheSameExtraction) {
+  std::mt19937 rng(12);
+  TSplineModel t = tspline_model(two_patches(rng));
+  ASSERT_GT(refine_in_region(t, Eigen::AlignedBox3d(Eigen::Vector3d(0.5, -9, -9), Eigen::Vector3d(9, 9, 9)), 1), 0);
+  igaprep::set_thread_count(1);
+  const ExtractionModel one = extraction_model(t);
+  igaprep::set_thread_count(2);
+  const ExtractionModel two = extraction_model(t);
+  igaprep::set_thread_count(0);
+  EXPECT_EQ(one.control_points, two.control_points);
+  EXPECT_EQ(one.weights, two.weights);
+  ASSERT_EQ(one.elements.size(), two.elements.size());
+  for (std::size_t e = 0; e < one.elements.size(); ++e) {
+    EXPECT_EQ(one.elements[e].functions, two.elements[e].functions);
+    EXPECT_EQ(one.C(static_cast<int>(e)), two.C(static_cast<int>(e)));
+  }
 }
 
 // Four splits made by hand without the closure (a 2-D pattern of crossing

@@ -9,7 +9,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
+#include "igaprep/core/error.h"
 #include "igaprep/iga_check/elasticity_evaluate.h"
 #include "igaprep/iga_check/elasticity_material.h"
 #include "igaprep/iga_check/elasticity_solve.h"
@@ -116,4 +118,20 @@ TEST(SolveCylinder, AutomaticChoiceBySize) {
   const auto large = iga_check::solve_elasticity(composite_cylinder(3, 1), cylinder_problem(), options);
   EXPECT_EQ(large.report.solver, "boomeramg-pcg");
   EXPECT_NEAR(large.report.strain_energy, small.report.strain_energy, 1e-8 * small.report.strain_energy);
+}
+
+// An iteration limit too small for the tolerance is an error naming the
+// true residual, never an answer.
+TEST(SolveCylinder, BoomerAmgThatDoesNotConvergeIsAnError) {
+  iga_check::ElasticityOptions options;
+  options.refine = 1;
+  options.solver = iga_check::LinearSolver::Amg;
+  options.cg_max_iterations = 2;
+  try {
+    iga_check::solve_elasticity(composite_cylinder(3, 1), cylinder_problem(), options);
+    ADD_FAILURE() << "two iterations reached the relative residual 1e-8";
+  } catch (const igaprep::Error& e) {
+    EXPECT_EQ(e.kind(), igaprep::ErrorKind::Internal);
+    EXPECT_NE(std::string(e.what()).find("did not converge in 2 iterations (relative residual"), std::string::npos) << e.what();
+  }
 }

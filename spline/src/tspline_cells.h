@@ -12,10 +12,12 @@
 
 namespace igaprep::spline::detail {
 
+// FNV-1a over a vector of integers (of any integer type).
 struct IntsHash {
-  std::size_t operator()(const std::vector<int>& k) const {
+  template <typename Int>
+  std::size_t operator()(const std::vector<Int>& k) const {
     std::size_t h = 1469598103934665603ull;
-    for (const int x : k) h = (h ^ static_cast<std::size_t>(x)) * 1099511628211ull;
+    for (const Int x : k) h = (h ^ static_cast<std::size_t>(x)) * 1099511628211ull;
     return h;
   }
 };

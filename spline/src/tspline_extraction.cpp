@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 #include "igaprep/core/error.h"
 #include "igaprep/core/parallel.h"
@@ -86,11 +87,12 @@ Eigen::MatrixXd operator_matrix(const PatchCells& cells, const std::vector<int>&
 
 // Operators shared across patches: each patch's 1-D vectors get global ids
 // by their entries (rounded to 1e-13), and an operator is keyed by the
-// global ids of its functions' vectors.
+// global ids of its functions' vectors. The matrices of the distinct keys
+// are made at the end, on all cores.
 class GlobalOperators {
  public:
-  explicit GlobalOperators(std::vector<Eigen::MatrixXd>& operators) : operators_(operators) {}
-  // Global operator ids of a patch's operators.
+  // Global operator ids of a patch's operators (the patch's cells must
+  // outlive build()).
   std::vector<int> add(const PatchCells& cells) {
     std::vector<int> global_1d;
     for (const Eigen::VectorXd& v : cells.vectors_1d) {
@@ -102,17 +104,23 @@ class GlobalOperators {
     for (const std::vector<int>& local : cells.operator_keys) {
       std::vector<int> key;
       for (const int id : local) key.push_back(global_1d[static_cast<std::size_t>(id)]);
-      const auto [it, added] = ids_.emplace(std::move(key), static_cast<int>(operators_.size()));
-      if (added) operators_.push_back(operator_matrix(cells, local));
+      const auto [it, added] = ids_.emplace(std::move(key), static_cast<int>(sources_.size()));
+      if (added) sources_.push_back({&cells, &local});
       out.push_back(it->second);
     }
     return out;
   }
 
+  std::vector<Eigen::MatrixXd> build() const {
+    std::vector<Eigen::MatrixXd> operators(sources_.size());
+    parallel_for(sources_.size(), [&](std::size_t k) { operators[k] = operator_matrix(*sources_[k].first, *sources_[k].second); });
+    return operators;
+  }
+
  private:
-  std::vector<Eigen::MatrixXd>& operators_;
-  std::map<std::vector<long long>, int> ids_1d_;
+  std::unordered_map<std::vector<long long>, int, IntsHash> ids_1d_;
   std::unordered_map<std::vector<int>, int, IntsHash> ids_;
+  std::vector<std::pair<const PatchCells*, const std::vector<int>*>> sources_;  // per global operator: a patch's key
 };
 
 // The element faces on the patch's labelled sides and on its interfaces with a surface.
@@ -175,18 +183,18 @@ ExtractionModel extraction_model(const TSplineModel& model) {
   bool rational = false;
   for (const Patch& p : mp.patches) rational = rational || p.rational();
   if (!rational) out.weights.setOnes();
-  GlobalOperators operators(out.operators);
+  GlobalOperators operators;
   for (std::size_t p = 0; p < cells.size(); ++p) {
     const std::vector<int> global_operator = operators.add(cells[p]);
     const int first = static_cast<int>(out.elements.size());
-    for (const ExtractionElement& e : cells[p].elements) {
-      ExtractionElement el = e;
-      for (int& f : el.functions) f = global[static_cast<std::size_t>(offset[p] + f)];
-      el.extraction = global_operator[static_cast<std::size_t>(e.extraction)];
-      out.elements.push_back(std::move(el));
-    }
     add_boundary_faces(model, static_cast<int>(p), first, cells[p], out);
+    for (ExtractionElement& e : cells[p].elements) {
+      for (int& f : e.functions) f = global[static_cast<std::size_t>(offset[p] + f)];
+      e.extraction = global_operator[static_cast<std::size_t>(e.extraction)];
+      out.elements.push_back(std::move(e));
+    }
   }
+  out.operators = operators.build();
   copy_model_descriptions(mp, out);
   return out;
 }

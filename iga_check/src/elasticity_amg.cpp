@@ -196,27 +196,10 @@ double relative_residual(const SparseMatrix& K, const Eigen::VectorXd& F, const 
   return f > 0 ? r.norm() / f : r.norm();
 }
 
-}  // namespace
-
-Eigen::VectorXd solve_amg(const SparseMatrix& K, const Eigen::VectorXd& F, const NodalLayout& layout, double tolerance,
-                          int max_iterations, ElasticityReport& report) {
-  start_hypre_once();
-  // hypre keeps global state (its error flag, its memory tracking): one solve at a time.
-  static std::mutex hypre_mutex;
-  const std::lock_guard<std::mutex> lock(hypre_mutex);
-  report.solver = "boomeramg-pcg";
-  const int n = static_cast<int>(layout.row_of.size());
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
-  for (int r = 0; r < n; ++r)
-    if (layout.row_of[static_cast<std::size_t>(r)] >= 0) b[r] = F[layout.row_of[static_cast<std::size_t>(r)]];
-  const NodalMatrix A(K, layout.row_of);
-  IJVector rhs, x;
-  make_vector(rhs, b);
-  make_vector(x, Eigen::VectorXd::Zero(n));
-  std::array<IJVector, 3> modes;
-  const std::array<Eigen::VectorXd, 3> rotation = rotations(layout.points);
-  for (std::size_t k = 0; k < 3; ++k) make_vector(modes[k], rotation[k]);
-
+// hypre's PCG on A x = rhs (x starts at zero) with BoomerAMG on A as its
+// preconditioner; the iterations it made.
+int run_pcg(const NodalMatrix& A, const IJVector& rhs, const IJVector& x, std::array<IJVector, 3>& modes, double tolerance,
+            int max_iterations) {
   Solvers s;
   check_hypre(HYPRE_BoomerAMGCreate(&s.amg), "HYPRE_BoomerAMGCreate");
   set_up_boomeramg(s.amg, modes);
@@ -227,29 +210,57 @@ Eigen::VectorXd solve_amg(const SparseMatrix& K, const Eigen::VectorXd& F, const
   HYPRE_PCGSetPrecond(s.pcg, reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_BoomerAMGSolve),
                       reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_BoomerAMGSetup), s.amg);
   // As in MFEM: the set-up may flag a singular coarse level (hypre's l1 row
-  // norms), which the V-cycle handles; the residual below is the judge.
+  // norms), which the V-cycle handles; the caller's residual is the judge.
   HYPRE_ParCSRPCGSetup(s.pcg, A.parcsr(), rhs.par(), x.par());
   HYPRE_ClearAllErrors();
   HYPRE_ParCSRPCGSolve(s.pcg, A.parcsr(), rhs.par(), x.par());
   HYPRE_ClearAllErrors();
   HYPRE_Int iterations = 0;
   HYPRE_PCGGetNumIterations(s.pcg, &iterations);
+  return static_cast<int>(iterations);
+}
 
+// x's entries at the rows of K (the free components), in K's order.
+Eigen::VectorXd free_values(const IJVector& x, const NodalLayout& layout, Eigen::Index rows) {
+  const int n = static_cast<int>(layout.row_of.size());
   Eigen::VectorXd full(n);
   std::vector<HYPRE_BigInt> index(static_cast<std::size_t>(n));
   for (int r = 0; r < n; ++r) index[static_cast<std::size_t>(r)] = r;
   check_hypre(HYPRE_IJVectorGetValues(x.ij, n, index.data(), full.data()), "HYPRE_IJVectorGetValues");
-  Eigen::VectorXd u(F.size());
+  Eigen::VectorXd u(rows);
   for (int r = 0; r < n; ++r)
     if (layout.row_of[static_cast<std::size_t>(r)] >= 0) u[layout.row_of[static_cast<std::size_t>(r)]] = full[r];
-  report.cg_iterations = static_cast<int>(iterations);
+  return u;
+}
+
+}  // namespace
+
+Eigen::VectorXd solve_amg(const SparseMatrix& K, const Eigen::VectorXd& F, const NodalLayout& layout, double tolerance,
+                          int max_iterations, ElasticityReport& report) {
+  start_hypre_once();
+  // hypre keeps global state (its error flag, its memory tracking): one solve at a time.
+  static std::mutex hypre_mutex;
+  const std::lock_guard<std::mutex> lock(hypre_mutex);
+  report.solver = "boomeramg-pcg";
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(layout.row_of.size()));
+  for (std::size_t r = 0; r < layout.row_of.size(); ++r)
+    if (layout.row_of[r] >= 0) b[static_cast<Eigen::Index>(r)] = F[layout.row_of[r]];
+  const NodalMatrix A(K, layout.row_of);
+  IJVector rhs, x;
+  make_vector(rhs, b);
+  make_vector(x, Eigen::VectorXd::Zero(b.size()));
+  std::array<IJVector, 3> modes;
+  const std::array<Eigen::VectorXd, 3> rotation = rotations(layout.points);
+  for (std::size_t k = 0; k < 3; ++k) make_vector(modes[k], rotation[k]);
+  report.cg_iterations = run_pcg(A, rhs, x, modes, tolerance, max_iterations);
+  const Eigen::VectorXd u = free_values(x, layout, F.size());
   report.cg_residual = relative_residual(K, F, u);
   // Round-off in hypre's recurrence leaves the true residual a little above
   // the one it tracks: a tenth of a digit is allowed, more is a failure.
   if (!u.allFinite() || !(report.cg_residual <= 1.25 * tolerance)) {
     std::ostringstream msg;
-    msg << "conjugate gradients with BoomerAMG did not converge in " << iterations << " iterations (relative residual "
-        << report.cg_residual << ", asked " << tolerance
+    msg << "conjugate gradients with BoomerAMG did not converge in " << report.cg_iterations
+        << " iterations (relative residual " << report.cg_residual << ", asked " << tolerance
         << "); the direct solver (LinearSolver::Cholesky) does not depend on convergence";
     throw internal_error(msg.str());
   }

@@ -10,7 +10,6 @@
 #include "igaprep/core/error.h"
 #include "igaprep/export/export_model.h"
 #include "igaprep/export/hdf5_extraction.h"
-#include "igaprep/export/bext.h"
 #include "igaprep/export/hdf5_model.h"
 
 namespace igaprep::cli {
@@ -18,15 +17,11 @@ namespace igaprep::cli {
 namespace {
 // A model in Bezier-extraction form (igaprep tspline): vtu and bext.
 int export_extraction(const std::string& model, const std::vector<exporter::Format>& formats, const std::string& basename) {
-  for (const exporter::Format f : formats)
-    if (f != exporter::Format::Vtu && f != exporter::Format::Bext)
-      throw bad_input("export: '" + model + "' is a Bezier-extraction model; it is written as vtu or bext, not " +
-                      exporter::format_name(f));
+  for (const exporter::Format f : formats) exporter::extraction_format_paths(basename, f, 0);  // refused before reading
   const spline::ExtractionModel m = exporter::read_hdf5_extraction(model);
   std::vector<std::string> outputs;
   for (const exporter::Format f : formats)
-    for (const std::string& path : f == exporter::Format::Vtu ? std::vector<std::string>{basename + ".vtu"}
-                                                               : exporter::bext_paths(basename, static_cast<int>(m.materials.size())))
+    for (const std::string& path : exporter::extraction_format_paths(basename, f, static_cast<int>(m.materials.size())))
       outputs.push_back(path);
   refuse_replacing_inputs({model}, outputs);
   for (const std::string& path : exporter::export_extraction_model(m, basename, formats)) std::cout << "wrote " << path << "\n";

@@ -1,8 +1,8 @@
 // BEXT part files and the LS-DYNA deck of a model in Bezier-extraction form
-// (T-splines). An element block holds one node count, and a refined
-// model's elements have different numbers of functions, so its elements are
-// grouped into blocks by degrees and function count (docs/export-formats.md).
-#include <cmath>
+// (T-splines). An element block holds one node count, so elements are
+// grouped into blocks by degrees and function count (an analysis-suitable
+// T-spline has (p+1)(q+1)(r+1) functions on every element, other
+// extraction models need not; docs/export-formats.md).
 #include <map>
 #include <set>
 #include <utility>
@@ -47,28 +47,6 @@ void check_material(const spline::ExtractionModel& m, int material, const char* 
                     std::to_string(m.materials.size()));
 }
 
-// The element's functions that do not vanish on its side `side`: those with
-// a Bernstein coefficient on that face (open knots: the face's trace).
-std::vector<int> face_functions(const spline::ExtractionModel& m, int element, spline::Side side) {
-  const spline::ExtractionElement& el = m.elements[static_cast<std::size_t>(element)];
-  const Eigen::MatrixXd& C = m.C(element);
-  const std::array<int, 3>& p = el.degrees;
-  const int d = side.direction(), fixed = side.parameter() ? p[static_cast<std::size_t>(d)] : 0;
-  std::vector<int> out;
-  for (Eigen::Index r = 0; r < C.rows(); ++r) {
-    bool on_face = false;
-    for (int k = 0; k <= p[2] && !on_face; ++k)
-      for (int j = 0; j <= p[1] && !on_face; ++j)
-        for (int i = 0; i <= p[0] && !on_face; ++i) {
-          const int index[3] = {i, j, k};
-          if (index[d] != fixed) continue;
-          on_face = std::abs(C(r, i + (p[0] + 1) * (j + (p[1] + 1) * k))) > 1e-12;
-        }
-    if (on_face) out.push_back(el.functions[static_cast<std::size_t>(r)]);
-  }
-  return out;
-}
-
 }  // namespace
 
 void write_bext_part(const spline::ExtractionModel& model, int material, std::ostream& out) {
@@ -106,8 +84,9 @@ void write_lsdyna_deck(const spline::ExtractionModel& model, const std::vector<s
   std::vector<std::vector<std::set<long long>>> nodes(model.labels.size(), std::vector<std::set<long long>>(parts.size()));
   for (const spline::ExtractionBoundaryFace& face : model.boundary_faces) {
     const auto m = static_cast<std::size_t>(model.elements[static_cast<std::size_t>(face.element)].material);
-    for (const int fn : face_functions(model, face.element, face.side))
-      nodes[static_cast<std::size_t>(face.label)][m].insert(parts[m].node_of[static_cast<std::size_t>(fn)]);
+    const std::vector<int>& functions = model.elements[static_cast<std::size_t>(face.element)].functions;
+    for (const int r : spline::face_functions(model, face.element, face.side))
+      nodes[static_cast<std::size_t>(face.label)][m].insert(parts[m].node_of[static_cast<std::size_t>(functions[static_cast<std::size_t>(r)])]);
   }
   std::vector<detail::DeckNodeSet> sets;
   for (std::size_t label = 0; label < model.labels.size(); ++label)

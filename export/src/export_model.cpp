@@ -111,19 +111,24 @@ std::vector<std::string> export_model(const spline::MultiPatch& model, const std
   return written;
 }
 
+std::vector<std::string> extraction_format_paths(const std::string& basename, Format f, int materials) {
+  if (f == Format::Vtu) return {basename + ".vtu"};
+  if (f == Format::Bext) return bext_paths(basename, materials);
+  throw bad_input("'" + basename + "': a Bezier-extraction model is written as vtu or bext, not " + format_name(f));
+}
+
 std::vector<std::string> export_extraction_model(const spline::ExtractionModel& model, const std::string& basename,
                                                  const std::vector<Format>& formats) {
-  for (const Format f : formats)
-    if (f != Format::Vtu && f != Format::Bext)
-      throw bad_input("'" + basename + "': a Bezier-extraction model is written as vtu or bext, not " + format_name(f));
+  const int materials = static_cast<int>(model.materials.size());
+  for (const Format f : formats) extraction_format_paths(basename, f, materials);  // refused before writing
   std::vector<std::unique_ptr<AtomicPath>> targets;
   for (const Format f : formats) {
+    const std::vector<std::string> paths = extraction_format_paths(basename, f, materials);
     if (f == Format::Vtu) {
-      targets.push_back(std::make_unique<AtomicPath>(basename + ".vtu"));
+      targets.push_back(std::make_unique<AtomicPath>(paths.front()));
       targets.back()->write([&](std::ostream& out) { write_vtu_bezier(model, out); }, true);
       continue;
     }
-    const std::vector<std::string> paths = bext_paths(basename, static_cast<int>(model.materials.size()));
     std::vector<std::string> part_files;  // the deck names them relative to itself
     for (std::size_t m = 1; m < paths.size(); ++m) {
       part_files.push_back(std::filesystem::path(paths[m]).filename().string());

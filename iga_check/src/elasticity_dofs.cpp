@@ -42,10 +42,7 @@ ElasticityDofs constrain_dofs(const spline::MultiPatch& mp, spline::GlobalNumber
 NodalLayout nodal_layout(const spline::MultiPatch& mp, const ElasticityDofs& dofs) {
   NodalLayout layout;
   layout.row_of = dofs.equation;
-  layout.points.resize(dofs.numbering.count, 3);
-  for (std::size_t p = 0; p < mp.patches.size(); ++p)
-    for (std::size_t l = 0; l < dofs.numbering.global[p].size(); ++l)
-      layout.points.row(dofs.numbering.global[p][l]) = mp.patches[p].control_points.row(static_cast<Eigen::Index>(l));
+  layout.points = spline::global_points(mp, dofs.numbering);
   return layout;
 }
 

@@ -42,14 +42,6 @@ Parts connected_parts(const spline::MultiPatch& mp, const spline::GlobalNumberin
   return parts;
 }
 
-// Control points by global number (a shared point from its last patch).
-Eigen::MatrixXd global_points(const spline::MultiPatch& mp, const spline::GlobalNumbering& num) {
-  Eigen::MatrixXd X(num.count, 3);
-  for (size_t p = 0; p < mp.patches.size(); ++p)
-    for (size_t l = 0; l < num.global[p].size(); ++l) X.row(num.global[p][l]) = mp.patches[p].control_points.row(l);
-  return X;
-}
-
 // Gram matrix of the six modes (translations, rotations about the centroid,
 // lengths scaled by the part's size) restricted to the constrained components
 // of the control points cps.
@@ -117,7 +109,7 @@ std::string rigid_modes_message(const spline::MultiPatch& mp, const std::vector<
 void check_rigid_modes(const spline::MultiPatch& mp, const spline::GlobalNumbering& num,
                        const std::vector<unsigned char>& constrained) {
   const Parts parts = connected_parts(mp, num);
-  const Eigen::MatrixXd X = global_points(mp, num);
+  const Eigen::MatrixXd X = spline::global_points(mp, num);
   for (const auto& [root, patches] : parts.patches) {
     std::vector<int> cps;
     for (int g = 0; g < num.count; ++g)

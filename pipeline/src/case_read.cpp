@@ -100,10 +100,11 @@ std::vector<std::string> read_export(const json& v, const std::string& file) {
 
 iga_check::LinearSolver read_solver(ObjectReader& r, iga_check::LinearSolver fallback) {
   const std::string name = r.string("solver", iga_check::linear_solver_name(fallback));
-  for (const auto s : {iga_check::LinearSolver::Automatic, iga_check::LinearSolver::Cholesky,
-                       iga_check::LinearSolver::ConjugateGradient, iga_check::LinearSolver::Amg})
-    if (name == iga_check::linear_solver_name(s)) return s;
-  r.fail("'" + r.path("solver") + "' must be \"auto\", \"cholesky\", \"cg\" or \"amg\"");
+  try {
+    return iga_check::linear_solver_named(name);  // the one list of names
+  } catch (const Error&) {
+    r.fail("'" + r.path("solver") + "' must be \"auto\", \"cholesky\", \"cg\" or \"amg\"");
+  }
 }
 
 // Reads "label" and optional "box" of a load-case entry.

@@ -1,7 +1,7 @@
 #pragma once
-// Private to spline/: the control points of a model by global number
-// (global_numbering), and which of them lie on given patch sides; shared by
-// fit_model_surface and carry_moves_inside.
+// Private to spline/: which control points of a model (by global number,
+// global_numbering; their positions: global_points) lie on given patch
+// sides; shared by fit_model_surface and carry_moves_inside.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <utility>
@@ -35,14 +35,6 @@ inline void mark_faces(const MultiPatch& mp, const GlobalNumbering& gn, const Fa
   for (const auto& [patch, side] : faces)
     for (int local : side_control_points(mp.patches.at(static_cast<size_t>(patch)), side))
       mark[static_cast<size_t>(gn.global[static_cast<size_t>(patch)][static_cast<size_t>(local)])] = 1;
-}
-
-inline Eigen::MatrixXd global_points(const MultiPatch& mp, const GlobalNumbering& gn) {
-  Eigen::MatrixXd X(gn.count, 3);
-  for (size_t p = 0; p < mp.patches.size(); ++p)
-    for (int i = 0; i < mp.patches[p].control_points.rows(); ++i)
-      X.row(gn.global[p][static_cast<size_t>(i)]) = mp.patches[p].control_points.row(i);
-  return X;
 }
 
 // Writes the global points back into every patch: shared points stay identical.

@@ -234,4 +234,12 @@ GlobalNumbering global_numbering(const MultiPatch& mp) {
   return g;
 }
 
+Eigen::MatrixXd global_points(const MultiPatch& mp, const GlobalNumbering& gn) {
+  Eigen::MatrixXd X(gn.count, 3);
+  for (std::size_t p = 0; p < mp.patches.size(); ++p)
+    for (Eigen::Index i = 0; i < mp.patches[p].control_points.rows(); ++i)
+      X.row(gn.global[p][static_cast<std::size_t>(i)]) = mp.patches[p].control_points.row(i);
+  return X;
+}
+
 }  // namespace igaprep::spline

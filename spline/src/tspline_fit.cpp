@@ -65,25 +65,6 @@ Eigen::Vector3d outward_normal(ElementPoints& points, int element, Side side, co
   return n.normalized();
 }
 
-// The element's functions (positions in its `functions`) that do not vanish
-// on a face: a non-zero coefficient on a Bernstein polynomial of the face.
-std::vector<int> face_functions(const ExtractionModel& m, int element, Side side) {
-  const ExtractionElement& e = m.elements[static_cast<std::size_t>(element)];
-  const Eigen::MatrixXd& C = m.C(element);
-  const int n = side.direction(), at = side.parameter() ? e.degrees[static_cast<std::size_t>(n)] : 0;
-  const int nu = e.degrees[0] + 1, nv = e.degrees[1] + 1;
-  std::vector<int> out;
-  for (Eigen::Index r = 0; r < C.rows(); ++r)
-    for (Eigen::Index b = 0; b < C.cols(); ++b) {
-      const int index[3] = {static_cast<int>(b % nu), static_cast<int>((b / nu) % nv), static_cast<int>(b / (nu * nv))};
-      if (index[n] == at && std::abs(C(r, b)) > 1e-14) {
-        out.push_back(static_cast<int>(r));
-        break;
-      }
-    }
-  return out;
-}
-
 // Per function: the surfaces whose faces it does not vanish on.
 std::vector<std::set<int>> surfaces_of_functions(const ExtractionModel& m) {
   std::vector<std::set<int>> out(static_cast<std::size_t>(m.function_count()));

@@ -35,10 +35,13 @@ std::vector<std::string> export_model(const spline::MultiPatch& model, const std
                                       const std::vector<Format>& formats, const VtuOptions& vtu = {},
                                       const ProgressCallback& progress = {});
 
-// The same for a model in Bezier-extraction form (a T-spline): vtu (only
-// BASENAME.vtu: no boundary file) and bext. The other formats hold
-// tensor-product patches, and asking for one throws bad_input before any
-// file is written.
+// The files a format writes for a model in Bezier-extraction form (a
+// T-spline): vtu (only BASENAME.vtu: no boundary file) and bext. The other
+// formats hold tensor-product patches: bad_input.
+std::vector<std::string> extraction_format_paths(const std::string& basename, Format f, int materials);
+
+// Writes extraction_format_paths() for each format, all or none; a format
+// this form has not is refused before any file is written.
 std::vector<std::string> export_extraction_model(const spline::ExtractionModel& model, const std::string& basename,
                                                  const std::vector<Format>& formats);
 

@@ -78,6 +78,11 @@ ExtractionModel extraction_model(const MultiPatch& mp);
 // provenance) from the multipatch it was made from.
 void copy_model_descriptions(const MultiPatch& mp, ExtractionModel& out);
 
+// The element's functions (positions in its `functions`) that do not vanish
+// on its face `side`: a coefficient beyond 1e-14 on a Bernstein polynomial
+// of that face (open knots: the face's trace).
+std::vector<int> face_functions(const ExtractionModel& m, int element, Side side);
+
 // The element as a Bezier element: its Bernstein points C_e^T times its
 // functions' control points in homogeneous coordinates (weights only when
 // the model is rational), and its parameter box.

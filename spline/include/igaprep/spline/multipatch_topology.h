@@ -53,4 +53,8 @@ struct GlobalNumbering {
 // order of first appearance (patch 0 local 0 first), so they are deterministic.
 GlobalNumbering global_numbering(const MultiPatch& mp);
 
+// The control points by global number (count x 3; a shared point from the
+// last patch that holds it: on a conforming model its copies agree).
+Eigen::MatrixXd global_points(const MultiPatch& mp, const GlobalNumbering& gn);
+
 }  // namespace igaprep::spline

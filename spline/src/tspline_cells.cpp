@@ -65,10 +65,21 @@ struct SubBox {
   int element = 0;  // of the patch, u fastest
 };
 
-bool meets(const TFunction& f, const TMesh& mesh, const std::array<TCoord, 3>& lo, const std::array<TCoord, 3>& hi) {
-  for (int d = 0; d < 3; ++d)
-    if (!(f.support_lo(d) < hi[static_cast<std::size_t>(d)] && lo[static_cast<std::size_t>(d)] < f.support_hi(d, mesh))) return false;
-  return true;
+// A function's support within the patch as (lo u, hi u, lo v, hi v, lo w, hi w).
+using Support = std::array<TCoord, 6>;
+
+std::vector<Support> supports(const TMesh& mesh, const std::vector<TFunction>& functions) {
+  std::vector<Support> out(functions.size());
+  for (std::size_t f = 0; f < functions.size(); ++f)
+    for (int d = 0; d < 3; ++d) {
+      out[f][static_cast<std::size_t>(2 * d)] = functions[f].support_lo(d);
+      out[f][static_cast<std::size_t>(2 * d + 1)] = functions[f].support_hi(d, mesh);
+    }
+  return out;
+}
+
+bool meets(const Support& s, const std::array<TCoord, 3>& lo, const std::array<TCoord, 3>& hi) {
+  return s[0] < hi[0] && lo[0] < s[1] && s[2] < hi[1] && lo[1] < s[3] && s[4] < hi[2] && lo[2] < s[5];
 }
 
 // Per patch element the functions whose support meets it.
@@ -88,67 +99,76 @@ std::vector<std::vector<int>> functions_by_element(const TMesh& mesh, const std:
   return out;
 }
 
-// A box split where the knots of the functions on it run through it.
-std::vector<SubBox> bezier_cells(const TBox& q, const std::vector<TFunction>& functions, const std::vector<int>& on_box) {
-  std::array<std::vector<TCoord>, 3> cuts;
+// A box split where the knots of the functions on it run through it, into
+// `out` (cleared); `cuts` is scratch space, kept from box to box.
+void bezier_cells(const TBox& q, const std::vector<TFunction>& functions, const std::vector<int>& on_box,
+                  std::array<std::vector<TCoord>, 3>& cuts, std::vector<SubBox>& out) {
   for (std::size_t d = 0; d < 3; ++d) {
-    cuts[d] = {q.lo[d], q.hi[d]};
+    cuts[d].assign({q.lo[d], q.hi[d]});
     for (const int f : on_box)
       for (const TCoord k : functions[static_cast<std::size_t>(f)].knots[d])
         if (q.lo[d] < k && k < q.hi[d]) cuts[d].push_back(k);
     std::sort(cuts[d].begin(), cuts[d].end());
     cuts[d].erase(std::unique(cuts[d].begin(), cuts[d].end()), cuts[d].end());
   }
-  std::vector<SubBox> out;
+  out.clear();
   for (std::size_t k = 0; k + 1 < cuts[2].size(); ++k)
     for (std::size_t j = 0; j + 1 < cuts[1].size(); ++j)
       for (std::size_t i = 0; i + 1 < cuts[0].size(); ++i)
         out.push_back({{{cuts[0][i], cuts[1][j], cuts[2][k]}}, {{cuts[0][i + 1], cuts[1][j + 1], cuts[2][k + 1]}}, q.element});
-  return out;
-}
-
-// The Bernstein coefficients of function f along d on [a, b] (parameters).
-Eigen::VectorXd bernstein_1d(const PatchContext& ctx, const TFunction& f, int d, double a, double b) {
-  std::vector<double> knots;
-  for (const TCoord x : f.knots[static_cast<std::size_t>(d)]) knots.push_back(ctx.parameter(d, x));
-  return bspline_bernstein(knots, a, b);
 }
 
 // The 1-D Bernstein vectors of the patch's functions on its cells, each
-// distinct one once: keyed by direction, the function's knots and the
-// cell's interval (index space).
+// distinct one once. A vector depends on the direction, the function's knots
+// in it and the cell's interval: knot vectors and intervals get ids once, so
+// the per-cell look-up is an index into a table.
 class Bernstein1dTable {
  public:
-  explicit Bernstein1dTable(const PatchContext& ctx) : ctx_(ctx) {
-    for (const int p : ctx.patch.degrees)
-      if (p + 2 + 3 > static_cast<int>(Key().size())) throw bad_input("T-spline: degree " + std::to_string(p) + " is above 9");
+  Bernstein1dTable(const PatchContext& ctx, const std::vector<TFunction>& functions) : ctx_(ctx) {
+    for (std::size_t d = 0; d < 3; ++d) {
+      std::map<std::vector<TCoord>, int> ids;
+      knot_id_[d].reserve(functions.size());
+      for (const TFunction& f : functions) {
+        const auto [it, added] = ids.emplace(f.knots[d], static_cast<int>(knots_[d].size()));
+        if (added) knots_[d].push_back(f.knots[d]);
+        knot_id_[d].push_back(it->second);
+      }
+      table_[d].resize(knots_[d].size());
+    }
   }
-  int id(const TFunction& f, int d, TCoord lo, TCoord hi) {
-    Key key{};
-    const std::vector<TCoord>& k = f.knots[static_cast<std::size_t>(d)];
-    std::copy(k.begin(), k.end(), key.begin());
-    key[k.size()] = lo, key[k.size() + 1] = hi, key[k.size() + 2] = d;
-    const auto [it, added] = ids_.emplace(key, static_cast<int>(vectors_.size()));
-    if (added) vectors_.push_back(bernstein_1d(ctx_, f, d, ctx_.parameter(d, lo), ctx_.parameter(d, hi)));
+  // The id of the interval [lo, hi] of direction d.
+  int interval(int d, TCoord lo, TCoord hi) {
+    const std::size_t dd = static_cast<std::size_t>(d);
+    const auto [it, added] = interval_ids_[dd].emplace(std::make_pair(lo, hi), static_cast<int>(intervals_[dd].size()));
+    if (added) intervals_[dd].push_back({lo, hi});
     return it->second;
   }
-  const Eigen::VectorXd& at(int id) const { return vectors_[static_cast<std::size_t>(id)]; }
+  int id(int function, int d, int interval) {
+    const std::size_t dd = static_cast<std::size_t>(d);
+    std::vector<int>& row = table_[dd][static_cast<std::size_t>(knot_id_[dd][static_cast<std::size_t>(function)])];
+    if (row.size() <= static_cast<std::size_t>(interval)) row.resize(intervals_[dd].size(), -1);
+    int& slot = row[static_cast<std::size_t>(interval)];
+    if (slot < 0) {
+      const auto [lo, hi] = intervals_[dd][static_cast<std::size_t>(interval)];
+      std::vector<double> knots;
+      for (const TCoord x : knots_[dd][static_cast<std::size_t>(knot_id_[dd][static_cast<std::size_t>(function)])])
+        knots.push_back(ctx_.parameter(d, x));
+      slot = static_cast<int>(vectors_.size());
+      vectors_.push_back(bspline_bernstein(knots, ctx_.parameter(d, lo), ctx_.parameter(d, hi)));
+    }
+    return slot;
+  }
   const std::vector<Eigen::VectorXd>& vectors() const { return vectors_; }
 
  private:
-  using Key = std::array<TCoord, 14>;  // p + 2 knots, the interval, the direction; zeros after
-  struct KeyHash {
-    std::size_t operator()(const Key& k) const {
-      std::size_t h = 1469598103934665603ull;
-      for (const TCoord x : k) h = (h ^ static_cast<std::size_t>(x)) * 1099511628211ull;
-      return h;
-    }
-  };
   const PatchContext& ctx_;
-  std::unordered_map<Key, int, KeyHash> ids_;
+  std::array<std::vector<std::vector<TCoord>>, 3> knots_;       // distinct knot vectors per direction
+  std::array<std::vector<int>, 3> knot_id_;                     // per direction and function
+  std::array<std::map<std::pair<TCoord, TCoord>, int>, 3> interval_ids_;
+  std::array<std::vector<std::pair<TCoord, TCoord>>, 3> intervals_;
+  std::array<std::vector<std::vector<int>>, 3> table_;          // [knot vector][interval] -> vector id, -1 until made
   std::vector<Eigen::VectorXd> vectors_;
 };
-
 
 // The coefficients, over the patch's own B-splines in direction d, of the
 // B-spline on the local knots `xi` (parameters): the row of the knot
@@ -216,14 +236,20 @@ PatchCells refined_patch_cells(const Patch& patch, const TMesh& mesh, int patch_
                          std::to_string(bad->first) + " and " + std::to_string(bad->second) + ")");
   const PatchContext ctx(patch, mesh);
   const std::vector<std::vector<int>> by_element = functions_by_element(mesh, out.functions);
-  Bernstein1dTable table(ctx);
+  Bernstein1dTable table(ctx, out.functions);
   std::unordered_map<std::vector<int>, int, IntsHash> operator_ids;
+  out.elements.reserve(mesh.boxes().size());
+  const std::vector<Support> support = supports(mesh, out.functions);
+  std::vector<int> on_box, key;  // reused from box to box
+  std::array<std::vector<TCoord>, 3> cuts;
+  std::vector<SubBox> box_cells;
   for (std::size_t box = 0; box < mesh.boxes().size(); ++box) {
     const TBox& q = mesh.boxes()[box];
-    std::vector<int> on_box;
+    on_box.clear();
     for (const int f : by_element[static_cast<std::size_t>(q.element)])
-      if (meets(out.functions[static_cast<std::size_t>(f)], mesh, q.lo, q.hi)) on_box.push_back(f);
-    for (const SubBox& cell : bezier_cells(q, out.functions, on_box)) {
+      if (meets(support[static_cast<std::size_t>(f)], q.lo, q.hi)) on_box.push_back(f);
+    bezier_cells(q, out.functions, on_box, cuts, box_cells);
+    for (const SubBox& cell : box_cells) {
       ExtractionElement e;
       e.degrees = patch.degrees;
       e.material = patch.material;
@@ -233,17 +259,20 @@ PatchCells refined_patch_cells(const Patch& patch, const TMesh& mesh, int patch_
         e.index[static_cast<std::size_t>(d)] = static_cast<int>(cell.lo[static_cast<std::size_t>(d)] / kTScale);
         e.domain[static_cast<std::size_t>(d)] = {{ctx.parameter(d, cell.lo[static_cast<std::size_t>(d)]), ctx.parameter(d, cell.hi[static_cast<std::size_t>(d)])}};
       }
-      std::vector<int> key;
+      std::array<int, 3> interval{};
+      for (int d = 0; d < 3; ++d)
+        interval[static_cast<std::size_t>(d)] = table.interval(d, cell.lo[static_cast<std::size_t>(d)], cell.hi[static_cast<std::size_t>(d)]);
+      key.clear();
+      e.functions.reserve(on_box.size());
       for (const int f : on_box) {
-        const TFunction& fn = out.functions[static_cast<std::size_t>(f)];
-        if (!meets(fn, mesh, cell.lo, cell.hi)) continue;
-        for (int d = 0; d < 3; ++d) key.push_back(table.id(fn, d, cell.lo[static_cast<std::size_t>(d)], cell.hi[static_cast<std::size_t>(d)]));
+        if (!meets(support[static_cast<std::size_t>(f)], cell.lo, cell.hi)) continue;
+        for (int d = 0; d < 3; ++d) key.push_back(table.id(f, d, interval[static_cast<std::size_t>(d)]));
         e.functions.push_back(f);
       }
       auto it = operator_ids.find(key);
       if (it == operator_ids.end()) {
         it = operator_ids.emplace(key, static_cast<int>(out.operator_keys.size())).first;
-        out.operator_keys.push_back(std::move(key));
+        out.operator_keys.push_back(key);
       }
       e.extraction = it->second;
       out.elements.push_back(std::move(e));

@@ -1,8 +1,8 @@
 #include <Eigen/Dense>
-#include <unsupported/Eigen/KroneckerProduct>
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -76,12 +76,23 @@ double model_scale(const MultiPatch& mp) {
   return s;
 }
 
-// C_e from its functions' 1-D vectors: row r = w (x) v (x) u.
+// C_e from its functions' 1-D vectors: row r = w (x) v (x) u (u fastest).
 Eigen::MatrixXd operator_matrix(const PatchCells& cells, const std::vector<int>& key) {
   const Eigen::Index n = static_cast<Eigen::Index>(key.size() / 3);
   auto v = [&](Eigen::Index r, int d) -> const Eigen::VectorXd& { return cells.vectors_1d[static_cast<std::size_t>(key[static_cast<std::size_t>(3 * r + d)])]; };
-  Eigen::MatrixXd C(n, v(0, 0).size() * v(0, 1).size() * v(0, 2).size());
-  for (Eigen::Index r = 0; r < n; ++r) C.row(r) = Eigen::kroneckerProduct(v(r, 2), Eigen::kroneckerProduct(v(r, 1), v(r, 0)).eval()).transpose();
+  const Eigen::Index nu = v(0, 0).size(), nv = v(0, 1).size(), nw = v(0, 2).size();
+  // Column by column (the matrix is column-major), the products in the order of w (x) (v (x) u).
+  std::vector<const double*> a(static_cast<std::size_t>(n)), b(a), c(a);
+  for (Eigen::Index r = 0; r < n; ++r) {
+    a[static_cast<std::size_t>(r)] = v(r, 0).data(), b[static_cast<std::size_t>(r)] = v(r, 1).data();
+    c[static_cast<std::size_t>(r)] = v(r, 2).data();
+  }
+  Eigen::MatrixXd C(n, nu * nv * nw);
+  double* out = C.data();
+  for (Eigen::Index k = 0; k < nw; ++k)
+    for (Eigen::Index j = 0; j < nv; ++j)
+      for (Eigen::Index i = 0; i < nu; ++i)
+        for (std::size_t r = 0; r < a.size(); ++r) *out++ = c[r][k] * (b[r][j] * a[r][i]);
   return C;
 }
 
@@ -95,17 +106,23 @@ class GlobalOperators {
   // outlive build()).
   std::vector<int> add(const PatchCells& cells) {
     std::vector<int> global_1d;
+    std::vector<long long> rounded;  // reused: a key is copied into the map only when new
     for (const Eigen::VectorXd& v : cells.vectors_1d) {
-      std::vector<long long> key;
-      for (Eigen::Index i = 0; i < v.size(); ++i) key.push_back(std::llround(v[i] * 1e13));
-      global_1d.push_back(ids_1d_.emplace(std::move(key), static_cast<int>(ids_1d_.size())).first->second);
+      rounded.clear();
+      for (Eigen::Index i = 0; i < v.size(); ++i) rounded.push_back(std::llround(v[i] * 1e13));
+      auto it = ids_1d_.find(rounded);
+      if (it == ids_1d_.end()) it = ids_1d_.emplace(rounded, static_cast<int>(ids_1d_.size())).first;
+      global_1d.push_back(it->second);
     }
-    std::vector<int> out;
+    std::vector<int> out, key;
     for (const std::vector<int>& local : cells.operator_keys) {
-      std::vector<int> key;
+      key.clear();
       for (const int id : local) key.push_back(global_1d[static_cast<std::size_t>(id)]);
-      const auto [it, added] = ids_.emplace(std::move(key), static_cast<int>(sources_.size()));
-      if (added) sources_.push_back({&cells, &local});
+      auto it = ids_.find(key);
+      if (it == ids_.end()) {
+        it = ids_.emplace(key, static_cast<int>(sources_.size())).first;
+        sources_.push_back({&cells, &local});
+      }
       out.push_back(it->second);
     }
     return out;
@@ -138,6 +155,69 @@ void add_boundary_faces(const TSplineModel& m, int patch, int first_element, con
     if (itf.patch_a == patch && itf.surface >= 0) add_faces(itf.side_a, itf.surface, out.interface_faces);
 }
 
+// The patches' functions joined across interfaces into the model's
+// functions: ids in order of first appearance, and one control point each
+// (every copy must agree).
+struct SharedFunctions {
+  const std::vector<PatchCells>& cells;
+  std::vector<int> offset;    // per patch: its first function in the concatenation
+  std::vector<int> class_of;  // per function of the concatenation: its class (a representative)
+  double scale;
+
+  SharedFunctions(const TSplineModel& m, const std::vector<PatchCells>& c, double s) : cells(c), scale(s) {
+    int total = 0;
+    for (const PatchCells& pc : cells) {
+      offset.push_back(total);
+      total += static_cast<int>(pc.functions.size());
+    }
+    UnionFind classes(total);
+    for (const Interface& itf : m.base.interfaces) join_interface(m, itf, cells, offset, classes);
+    class_of.resize(static_cast<std::size_t>(total));
+    for (int x = 0; x < total; ++x) class_of[static_cast<std::size_t>(x)] = classes.find(x);
+  }
+
+  // Per patch function (concatenated) its model function.
+  std::vector<int> global_ids() const {
+    std::vector<int> global(class_of.size(), -1), id_of_class(class_of.size(), -1);
+    int next = 0;
+    for (std::size_t p = 0; p < cells.size(); ++p)
+      for (Eigen::Index f = 0; f < cells[p].homogeneous.rows(); ++f) {
+        const std::size_t x = static_cast<std::size_t>(offset[p] + f), c = static_cast<std::size_t>(class_of[x]);
+        if (id_of_class[c] < 0) id_of_class[c] = next++;
+        global[x] = id_of_class[c];
+      }
+    return global;
+  }
+
+  // The model's control points and weights: each function's first copy;
+  // throws internal_error where a twin across an interface differs.
+  void set_control_points(const MultiPatch& mp, ExtractionModel& out) const {
+    std::vector<int> id_of_class(class_of.size(), -1);
+    std::vector<Eigen::RowVector4d> homogeneous;
+    for (std::size_t p = 0; p < cells.size(); ++p)
+      for (Eigen::Index f = 0; f < cells[p].homogeneous.rows(); ++f) {
+        const std::size_t c = static_cast<std::size_t>(class_of[static_cast<std::size_t>(offset[p] + f)]);
+        if (id_of_class[c] < 0) {
+          id_of_class[c] = static_cast<int>(homogeneous.size());
+          homogeneous.push_back(cells[p].homogeneous.row(f));
+        } else if ((homogeneous[static_cast<std::size_t>(id_of_class[c])] - cells[p].homogeneous.row(f)).cwiseAbs().maxCoeff() > 1e-9 * scale) {
+          throw internal_error("T-spline: patch " + std::to_string(p) + " function " + std::to_string(f) +
+                               " differs from its twin across an interface");
+        }
+      }
+    out.control_points.resize(static_cast<Eigen::Index>(homogeneous.size()), 3);
+    out.weights.resize(static_cast<Eigen::Index>(homogeneous.size()));
+    for (std::size_t g = 0; g < homogeneous.size(); ++g) {
+      out.weights[static_cast<Eigen::Index>(g)] = homogeneous[g][3];
+      out.control_points.row(static_cast<Eigen::Index>(g)) = homogeneous[g].head<3>() / homogeneous[g][3];
+    }
+    // A polynomial model keeps weights of exactly 1.
+    bool rational = false;
+    for (const Patch& p : mp.patches) rational = rational || p.rational();
+    if (!rational) out.weights.setOnes();
+  }
+};
+
 }  // namespace
 
 ExtractionModel extraction_model(const TSplineModel& model) {
@@ -149,48 +229,29 @@ ExtractionModel extraction_model(const TSplineModel& model) {
     cells[p] = patch_cells(mp.patches[p], model.meshes[p], static_cast<int>(p));
     if (model.meshes[p].refined()) check_reproduces_geometry(mp.patches[p], cells[p], static_cast<int>(p), 1e-10 * scale);
   });
-  std::vector<int> offset;
-  int total = 0;
-  for (const PatchCells& c : cells) {
-    offset.push_back(total);
-    total += static_cast<int>(c.functions.size());
-  }
-  UnionFind classes(total);
-  for (const Interface& itf : mp.interfaces) join_interface(model, itf, cells, offset, classes);
-  // Global ids in order of first appearance; every copy must agree.
-  std::vector<int> global(static_cast<std::size_t>(total), -1), id_of_class(static_cast<std::size_t>(total), -1);
-  std::vector<Eigen::RowVector4d> homogeneous;
-  for (std::size_t p = 0; p < cells.size(); ++p)
-    for (Eigen::Index f = 0; f < cells[p].homogeneous.rows(); ++f) {
-      const int x = offset[p] + static_cast<int>(f), c = classes.find(x);
-      if (id_of_class[static_cast<std::size_t>(c)] < 0) {
-        id_of_class[static_cast<std::size_t>(c)] = static_cast<int>(homogeneous.size());
-        homogeneous.push_back(cells[p].homogeneous.row(f));
-      } else if ((homogeneous[static_cast<std::size_t>(id_of_class[static_cast<std::size_t>(c)])] - cells[p].homogeneous.row(f)).cwiseAbs().maxCoeff() > 1e-9 * scale) {
-        throw internal_error("T-spline: patch " + std::to_string(p) + " function " + std::to_string(f) +
-                             " differs from its twin across an interface");
-      }
-      global[static_cast<std::size_t>(x)] = id_of_class[static_cast<std::size_t>(c)];
-    }
-  ExtractionModel out;
-  out.control_points.resize(static_cast<Eigen::Index>(homogeneous.size()), 3);
-  out.weights.resize(static_cast<Eigen::Index>(homogeneous.size()));
-  for (std::size_t g = 0; g < homogeneous.size(); ++g) {
-    out.weights[static_cast<Eigen::Index>(g)] = homogeneous[g][3];
-    out.control_points.row(static_cast<Eigen::Index>(g)) = homogeneous[g].head<3>() / homogeneous[g][3];
-  }
-  // A polynomial model keeps weights of exactly 1.
-  bool rational = false;
-  for (const Patch& p : mp.patches) rational = rational || p.rational();
-  if (!rational) out.weights.setOnes();
+  // Which operators are the same does not depend on the functions' classes: the two run side by side.
+  std::optional<SharedFunctions> functions;
+  std::vector<std::vector<int>> global_operator(cells.size());
   GlobalOperators operators;
+  std::vector<int> global;
+  parallel_for(2, [&](std::size_t task) {
+    if (task == 0) {
+      functions.emplace(model, cells, scale);
+      global = functions->global_ids();
+    } else {
+      for (std::size_t p = 0; p < cells.size(); ++p) global_operator[p] = operators.add(cells[p]);
+    }
+  });
+  ExtractionModel out;
+  functions->set_control_points(mp, out);
+  std::size_t element_count = 0;
+  for (const PatchCells& c : cells) element_count += c.elements.size();
+  out.elements.reserve(element_count);
   for (std::size_t p = 0; p < cells.size(); ++p) {
-    const std::vector<int> global_operator = operators.add(cells[p]);
-    const int first = static_cast<int>(out.elements.size());
-    add_boundary_faces(model, static_cast<int>(p), first, cells[p], out);
+    add_boundary_faces(model, static_cast<int>(p), static_cast<int>(out.elements.size()), cells[p], out);
     for (ExtractionElement& e : cells[p].elements) {
-      for (int& f : e.functions) f = global[static_cast<std::size_t>(offset[p] + f)];
-      e.extraction = global_operator[static_cast<std::size_t>(e.extraction)];
+      for (int& f : e.functions) f = global[static_cast<std::size_t>(functions->offset[p] + f)];
+      e.extraction = global_operator[p][static_cast<std::size_t>(e.extraction)];
       out.elements.push_back(std::move(e));
     }
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <unordered_map>
 #include <string>
 
 #include "igaprep/core/error.h"
@@ -53,51 +54,88 @@ std::vector<TCoord> ray_knots(const TMesh& mesh, const Point& a, int d) {
 }
 
 // The windows of p + 2 knots centred at the vertex's coordinate, and at an
-// end of the domain also at each of the (p - 1) / 2 repeated knots beyond it.
-std::vector<std::vector<TCoord>> windows(const std::vector<TCoord>& knots, TCoord x, TCoord extent, int p) {
+// end of the domain also at each of the (p - 1) / 2 repeated knots beyond it,
+// as the positions in `knots` where each starts (ascending); returns their count.
+int windows(const std::vector<TCoord>& knots, TCoord x, TCoord extent, int p, std::array<std::size_t, 8>& starts) {
   const int r = (p - 1) / 2;
-  std::vector<TCoord> centres{x};
-  for (int g = 1; g <= r; ++g) {
-    if (x == 0) centres.push_back(-g * kTScale);
-    if (x == extent) centres.push_back(extent + g * kTScale);
+  std::array<TCoord, 8> centres{};
+  int n = 0;
+  centres[static_cast<std::size_t>(n++)] = x;
+  for (int g = 1; g <= r && n < 8; ++g) {
+    if (x == 0) centres[static_cast<std::size_t>(n++)] = -g * kTScale;
+    if (x == extent) centres[static_cast<std::size_t>(n++)] = extent + g * kTScale;
   }
-  std::sort(centres.begin(), centres.end());
-  std::vector<std::vector<TCoord>> out;
-  for (const TCoord c : centres) {
-    const auto at = std::lower_bound(knots.begin(), knots.end(), c);
-    if (at == knots.end() || *at != c || at - knots.begin() < r + 1 || knots.end() - at < r + 2)
+  std::sort(centres.begin(), centres.begin() + n);
+  for (int i = 0; i < n; ++i) {
+    const auto at = std::lower_bound(knots.begin(), knots.end(), centres[static_cast<std::size_t>(i)]);
+    if (at == knots.end() || *at != centres[static_cast<std::size_t>(i)] || at - knots.begin() < r + 1 || knots.end() - at < r + 2)
       throw internal_error("T-spline functions: an anchor off its own ray");
-    out.emplace_back(at - (r + 1), at + (r + 2));
+    starts[static_cast<std::size_t>(i)] = static_cast<std::size_t>(at - knots.begin() - (r + 1));
   }
-  return out;
+  return n;
 }
+
+// A ray's key: the vertex's two other coordinates.
+struct LineHash {
+  std::size_t operator()(const std::pair<TCoord, TCoord>& l) const {
+    return std::hash<TCoord>()(l.first) * 1000003u ^ std::hash<TCoord>()(l.second);
+  }
+};
 
 }  // namespace
 
 std::vector<TFunction> tspline_functions(const TMesh& mesh) {
-  std::vector<Point> vertices;
+  // The boxes' corners, each once: packed into one integer of 40 bits per
+  // coordinate (corners lie in [0, extent], extent < 2^40) to sort fast.
+  using Packed = unsigned __int128;
+  std::vector<Packed> corners;
+  corners.reserve(8 * mesh.boxes().size());
   for (const TBox& b : mesh.boxes())
-    for (int c = 0; c < 8; ++c)
-      vertices.push_back({{(c & 1) ? b.hi[0] : b.lo[0], (c & 2) ? b.hi[1] : b.lo[1], (c & 4) ? b.hi[2] : b.lo[2]}});
-  std::sort(vertices.begin(), vertices.end());
-  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-  std::map<std::array<TCoord, 3>, TFunction> by_anchor;  // keyed (w, v, u): w slowest
+    for (int c = 0; c < 8; ++c) {
+      Packed key = 0;
+      for (int d = 2; d >= 0; --d)
+        key = (key << 40) | static_cast<Packed>((c >> d) & 1 ? b.hi[static_cast<std::size_t>(d)] : b.lo[static_cast<std::size_t>(d)]);
+      corners.push_back(key);
+    }
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  std::vector<Point> vertices(corners.size());
+  const Packed mask = (Packed(1) << 40) - 1;
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    for (int d = 0; d < 3; ++d) vertices[i][static_cast<std::size_t>(d)] = static_cast<TCoord>((corners[i] >> (40 * d)) & mask);
+  std::vector<std::pair<std::array<TCoord, 3>, TFunction>> by_anchor;  // keyed (w, v, u): w slowest
+  // Vertices on one line along d share their ray: each line is cast once.
+  std::array<std::unordered_map<std::pair<TCoord, TCoord>, std::vector<TCoord>, LineHash>, 3> rays;
+  by_anchor.reserve(vertices.size());
   for (const Point& a : vertices) {
-    std::array<std::vector<std::vector<TCoord>>, 3> per_dir;
-    for (int d = 0; d < 3; ++d)
-      per_dir[static_cast<std::size_t>(d)] = windows(ray_knots(mesh, a, d), a[static_cast<std::size_t>(d)], mesh.extent(d),
-                                                     mesh.degrees()[static_cast<std::size_t>(d)]);
-    for (const auto& ku : per_dir[0])
-      for (const auto& kv : per_dir[1])
-        for (const auto& kw : per_dir[2]) {
+    std::array<const std::vector<TCoord>*, 3> ray{};
+    std::array<std::array<std::size_t, 8>, 3> starts{};
+    std::array<int, 3> count{};
+    for (std::size_t d = 0; d < 3; ++d) {
+      const std::pair<TCoord, TCoord> line{a[(d + 1) % 3], a[(d + 2) % 3]};
+      auto it = rays[d].find(line);
+      if (it == rays[d].end()) it = rays[d].emplace(line, ray_knots(mesh, a, static_cast<int>(d))).first;
+      ray[d] = &it->second;
+      count[d] = windows(it->second, a[d], mesh.extent(static_cast<int>(d)), mesh.degrees()[d], starts[d]);
+    }
+    for (int i = 0; i < count[0]; ++i)
+      for (int j = 0; j < count[1]; ++j)
+        for (int k = 0; k < count[2]; ++k) {
           TFunction f;
-          f.knots = {{ku, kv, kw}};
-          by_anchor.emplace(std::array<TCoord, 3>{{f.anchor(2), f.anchor(1), f.anchor(0)}}, std::move(f));
+          const std::array<std::size_t, 3> at{{starts[0][static_cast<std::size_t>(i)], starts[1][static_cast<std::size_t>(j)], starts[2][static_cast<std::size_t>(k)]}};
+          for (std::size_t d = 0; d < 3; ++d) {
+            const auto first = ray[d]->begin() + static_cast<std::ptrdiff_t>(at[d]);
+            f.knots[d].assign(first, first + mesh.degrees()[d] + 2);
+          }
+          by_anchor.emplace_back(std::array<TCoord, 3>{{f.anchor(2), f.anchor(1), f.anchor(0)}}, std::move(f));
         }
   }
+  // Ordered by anchor; an anchor reached from two vertices is one function.
+  std::stable_sort(by_anchor.begin(), by_anchor.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<TFunction> out;
   out.reserve(by_anchor.size());
-  for (auto& [key, f] : by_anchor) out.push_back(std::move(f));
+  for (std::size_t i = 0; i < by_anchor.size(); ++i)
+    if (i == 0 || by_anchor[i].first != by_anchor[i - 1].first) out.push_back(std::move(by_anchor[i].second));
   return out;
 }
 
@@ -108,30 +146,65 @@ bool knot_vectors_overlap(const std::vector<TCoord>& a, const std::vector<TCoord
   return std::equal(first_a, last_a, first_b, last_b);
 }
 
+namespace {
+
+// The knot vectors of one direction, each distinct one with an id, and
+// whether two of them overlap (asked of many pairs of functions, computed
+// once per pair of vectors).
+class KnotVectorRelations {
+ public:
+  int id(const std::vector<TCoord>& knots) {
+    const auto [it, added] = ids_.emplace(knots, static_cast<int>(vectors_.size()));
+    if (added) vectors_.push_back(&it->first);
+    return it->second;
+  }
+  // Whether vectors a and b differ and overlap.
+  bool partial(int a, int b) {
+    if (a == b) return false;
+    const std::size_t n = vectors_.size();
+    if (known_.size() != n * n) known_.assign(n * n, -1);  // sized once every id is given
+    signed char& k = known_[static_cast<std::size_t>(a) * n + static_cast<std::size_t>(b)];
+    if (k < 0) k = knot_vectors_overlap(*vectors_[static_cast<std::size_t>(a)], *vectors_[static_cast<std::size_t>(b)]) ? 1 : 0;
+    return k == 1;
+  }
+
+ private:
+  std::map<std::vector<TCoord>, int> ids_;
+  std::vector<const std::vector<TCoord>*> vectors_;
+  std::vector<signed char> known_;
+};
+
+}  // namespace
+
 std::optional<std::pair<int, int>> dual_compatibility_violation(const TMesh& mesh,
                                                                 const std::vector<TFunction>& functions) {
-  // Supports as flat rows (lo u, hi u, lo v, hi v, lo w, hi w), swept in u.
-  std::vector<std::array<TCoord, 6>> support(functions.size());
-  for (std::size_t f = 0; f < functions.size(); ++f)
+  // Supports as flat rows (lo u, hi u, lo v, hi v, lo w, hi w) with the
+  // knot vectors' ids, sorted by lo u and swept in u.
+  struct Row {
+    std::array<TCoord, 6> support;
+    std::array<int, 3> knots;
+    int function;
+  };
+  std::array<KnotVectorRelations, 3> relations;
+  std::vector<Row> rows(functions.size());
+  for (std::size_t f = 0; f < functions.size(); ++f) {
+    rows[f].function = static_cast<int>(f);
     for (int d = 0; d < 3; ++d) {
-      support[f][static_cast<std::size_t>(2 * d)] = functions[f].support_lo(d);
-      support[f][static_cast<std::size_t>(2 * d + 1)] = functions[f].support_hi(d, mesh);
+      rows[f].support[static_cast<std::size_t>(2 * d)] = functions[f].support_lo(d);
+      rows[f].support[static_cast<std::size_t>(2 * d + 1)] = functions[f].support_hi(d, mesh);
+      rows[f].knots[static_cast<std::size_t>(d)] = relations[static_cast<std::size_t>(d)].id(functions[f].knots[static_cast<std::size_t>(d)]);
     }
-  std::vector<int> order(functions.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return support[static_cast<std::size_t>(a)][0] < support[static_cast<std::size_t>(b)][0]; });
-  for (std::size_t x = 0; x < order.size(); ++x) {
-    const std::array<TCoord, 6>& sf = support[static_cast<std::size_t>(order[x])];
-    for (std::size_t y = x + 1; y < order.size(); ++y) {
-      const std::array<TCoord, 6>& sg = support[static_cast<std::size_t>(order[y])];
+  }
+  std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.support[0] < b.support[0]; });
+  for (std::size_t x = 0; x < rows.size(); ++x) {
+    const std::array<TCoord, 6>& sf = rows[x].support;
+    for (std::size_t y = x + 1; y < rows.size(); ++y) {
+      const std::array<TCoord, 6>& sg = rows[y].support;
       if (sg[0] >= sf[1]) break;
       if (!(sg[2] < sf[3] && sf[2] < sg[3] && sg[4] < sf[5] && sf[4] < sg[5])) continue;
-      const TFunction& f = functions[static_cast<std::size_t>(order[x])];
-      const TFunction& g = functions[static_cast<std::size_t>(order[y])];
       bool partial = false;
-      for (std::size_t d = 0; d < 3 && !partial; ++d)
-        partial = f.knots[d] != g.knots[d] && knot_vectors_overlap(f.knots[d], g.knots[d]);
-      if (!partial) return std::make_pair(order[x], order[y]);
+      for (std::size_t d = 0; d < 3 && !partial; ++d) partial = relations[d].partial(rows[x].knots[d], rows[y].knots[d]);
+      if (!partial) return std::make_pair(rows[x].function, rows[y].function);
     }
   }
   return std::nullopt;

@@ -294,7 +294,8 @@ InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polyc
   // This also lets the self-intersection test below always decide.
   const std::string name = "the inset base surface (d = " + std::to_string(d) + ")";
   const std::string problem = describe_sheet_problem(analyze_sheet(F, V.rows()), static_cast<int>(D.holes.size()) + 1, name);
-  if (!problem.empty()) throw check_failed(problem);
+  if (!problem.empty())
+    throw bad_input(problem + "; another inset ('decomposition.inset') or corner points ('midsurface.corners') change the cut");
   // Smoothing moves vertices along their normals; where M0trim folds sharply
   // that can make M cross itself (the genus-3 torus of ../shared/models at 5
   // rounds), which H cannot embed: then fewer rounds, down to none.

@@ -775,9 +775,10 @@ Polycube2D polycube_2d(mesh::TriMesh& sheet, const std::vector<std::vector<int>>
   if (!(pc.min_jacobian > 0.0)) {
     int flipped = 0;
     for (Eigen::Index f = 0; f < pc.jacobian.size(); ++f) flipped += pc.jacobian(f) <= 0.0;
-    throw check_failed("polycube: the (u, v) map of M0trim folds (" + std::to_string(flipped) +
-                       " triangles not positively oriented, with cotangent and with mean-value weights); "
-                       "give corner points or other cut loops in the case file");
+    // The corners and the cut are the user's to change: bad input, not a failed check of a model.
+    throw bad_input("polycube: the (u, v) map of M0trim folds (" + std::to_string(flipped) +
+                    " triangles not positively oriented, with cotangent and with mean-value weights); "
+                    "give corner points ('midsurface.corners') or other cut loops ('midsurface.cut') in the case file");
   }
   pc.rectangles = domain_rectangles(pc.domain);
   return pc;

@@ -33,6 +33,24 @@ const char* to_string(BlockKind kind) {
 
 namespace {
 
+// A ray of the core that fails (it leaves the solid, or does not reach its
+// level within the length allowed) says that the solid is thinner along it
+// than the core reaches: a property of the shape and of case keys the user
+// can change (exit 1), not a failed check of a built model.
+Eigen::Vector3d core_ray(const FieldProbe& probe, const char* what, const Eigen::Vector3d& from, const Eigen::Vector3d& dir,
+                         double level, double step, double max_length, int* hint) {
+  try {
+    return probe.ray_to_level(from, dir, level, step, max_length, hint);
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::CheckFailed) throw;
+    throw bad_input(std::string("param: ") + what + ": " + e.what() +
+                    "; the solid is thinner along this ray than the core reaches: steeper rays ('decomposition.theta'), "
+                    "a thinner core ('decomposition.w0' nearer 1), another 'decomposition.inset', or a finer tet mesh "
+                    "('tetmesh.max_volume') can change that");
+  }
+}
+
+
 using Grid2 = std::vector<Eigen::Vector3d>;  // m x m, first index fastest
 
 // (1 - t) p + t q: exact at t = 0 and t = 1, so blocks that share a face
@@ -181,7 +199,7 @@ struct VolumeContext {
   // they all bend to the crest.
   Eigen::Vector3d ray(const Frame& f, double side) {
     const Eigen::Vector3d dir = (side * f.normal + cot_theta * f.lean).normalized();
-    return probe.ray_to_level(f.position, dir, w0, step, 0.5 * diag, &hint);
+    return core_ray(probe, "the lid's ray from M", f.position, dir, w0, step, 0.5 * diag, &hint);
   }
 
   // Strategy 1 starts its streamlines this far from M along D+ and D-
@@ -383,7 +401,7 @@ CrestProfile crest_profile(VolumeContext& ctx, const CrestSegment& seg, const Re
     const double r3 = 0.5 * ((c.P3[k] - c.P0[k]).norm() + (c.P1[k] - c.P0[k]).norm());
     const double kite = ctx.options.crest_reach * r3 / std::cos(ctx.options.theta);
     const Eigen::Vector3d limit =
-        ctx.probe.ray_to_level(c.P0[k], b, 0.5 * (ctx.inner + ctx.w0), ctx.step, 0.5 * ctx.diag, &ctx.hint);
+        core_ray(ctx.probe, "the crest's ray along M's binormal", c.P0[k], b, 0.5 * (ctx.inner + ctx.w0), ctx.step, 0.5 * ctx.diag, &ctx.hint);
     c.P2[k] = c.P0[k] + std::min(kite, (limit - c.P0[k]).norm()) * b;
   }
   // The lids' edges P3 and P1 are smooth; P2 follows the ray limits, which

@@ -54,8 +54,8 @@ int collapse_short_edges(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, const std::v
 // holes and between a hole and the outside); rounds of Taubin smoothing of
 // the 3D positions along the normals (the domain's corners fixed; halved
 // until M does not intersect itself, InsetBase::smoothing). Output: the inset sheet.
-// Throws check_failed when the result is not one sheet with one boundary
-// loop per domain boundary.
+// Throws bad_input (the inset and the corners are the user's to change)
+// when the result is not one sheet with one boundary loop per domain boundary.
 InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polycube, double inset, int smoothing);
 
 // Taubin smoothing (lambda 0.5, mu -0.53) of a sheet's vertices along their

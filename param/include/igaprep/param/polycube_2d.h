@@ -136,7 +136,7 @@ struct Polycube2D {
 // The whole step. Inputs: sheet (M0trim, after split_boundary_ears; refined in
 // place at hole corners, see refine_hole_corners), its boundary loops, corner
 // points (empty: automatic). Output: the parameterization; cotangent weights first and mean-value weights when some
-// triangle is not positively oriented. Throws check_failed when neither gives
+// triangle is not positively oriented. Throws bad_input when neither gives
 // a bijective map (the message suggests other corners or cut loops).
 Polycube2D polycube_2d(mesh::TriMesh& sheet, const std::vector<std::vector<int>>& loops,
                        const std::vector<Eigen::Vector3d>& corner_points = {});

@@ -82,11 +82,9 @@ struct LineHash {
   }
 };
 
-}  // namespace
-
-std::vector<TFunction> tspline_functions(const TMesh& mesh) {
-  // The boxes' corners, each once: packed into one integer of 40 bits per
-  // coordinate (corners lie in [0, extent], extent < 2^40) to sort fast.
+// The boxes' corners, each once: packed into one integer of 40 bits per
+// coordinate (corners lie in [0, extent], extent < 2^40) to sort fast.
+std::vector<Point> mesh_vertices(const TMesh& mesh) {
   using Packed = unsigned __int128;
   std::vector<Packed> corners;
   corners.reserve(8 * mesh.boxes().size());
@@ -103,6 +101,13 @@ std::vector<TFunction> tspline_functions(const TMesh& mesh) {
   const Packed mask = (Packed(1) << 40) - 1;
   for (std::size_t i = 0; i < corners.size(); ++i)
     for (int d = 0; d < 3; ++d) vertices[i][static_cast<std::size_t>(d)] = static_cast<TCoord>((corners[i] >> (40 * d)) & mask);
+  return vertices;
+}
+
+}  // namespace
+
+std::vector<TFunction> tspline_functions(const TMesh& mesh) {
+  const std::vector<Point> vertices = mesh_vertices(mesh);
   std::vector<std::pair<std::array<TCoord, 3>, TFunction>> by_anchor;  // keyed (w, v, u): w slowest
   // Vertices on one line along d share their ray: each line is cast once.
   std::array<std::unordered_map<std::pair<TCoord, TCoord>, std::vector<TCoord>, LineHash>, 3> rays;

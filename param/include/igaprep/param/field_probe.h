@@ -5,6 +5,7 @@
 // find the iso-surface T(n+1) = {w = w0} around the base surface M and to
 // follow -grad w out to T1 (streamline_column.h).
 #include <limits>
+#include <memory>
 
 #include <Eigen/Core>
 
@@ -12,13 +13,16 @@
 
 namespace igaprep::param {
 
+namespace detail {
+class TetGrid;
+}
+
 class FieldProbe {
  public:
   // Inputs: V, tets, their topology, the field (#V) and its per-vertex
   // gradients (#V x 3, vertex_gradients()). All referenced, not copied.
   FieldProbe(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, const TetTopology& topology,
-             const Eigen::VectorXd& u, const Eigen::MatrixXd& vertex_gradient)
-      : V_(V), T_(T), topo_(topology), u_(u), grad_(vertex_gradient) {}
+             const Eigen::VectorXd& u, const Eigen::MatrixXd& vertex_gradient);
 
   // The tet holding p (locate_in_tets): a walk from *hint, with a scan when
   // it cycles, or when it leaves the mesh and no hint was given; -1 when a
@@ -50,7 +54,10 @@ class FieldProbe {
   // length), max_length. Output: the first point of the ray where the
   // smooth u (smooth_value) = level
   // (the first march step that reaches it, then bisection to 1e-12 of the
-  // step). Throws check_failed when the ray leaves the mesh or runs
+  // step). A point where the walk from the last step leaves the mesh is
+  // looked up afresh (a grid of the tets): the way to a point inside can
+  // cross a re-entrant edge of the boundary. Throws check_failed when the
+  // ray leaves the mesh or runs
   // max_length without reaching the level.
   // *hint: a tet near start (receives the last tet visited).
   Eigen::Vector3d ray_to_level(const Eigen::Vector3d& start, const Eigen::Vector3d& direction, double level,
@@ -62,6 +69,7 @@ class FieldProbe {
   const TetTopology& topo_;
   const Eigen::VectorXd& u_;
   const Eigen::MatrixXd& grad_;
+  std::shared_ptr<const detail::TetGrid> grid_;  // shared by copies
   double ridge_ = std::numeric_limits<double>::infinity();
 };
 

@@ -50,7 +50,6 @@ Eigen::Vector3d core_ray(const FieldProbe& probe, const char* what, const Eigen:
   }
 }
 
-
 using Grid2 = std::vector<Eigen::Vector3d>;  // m x m, first index fastest
 
 // (1 - t) p + t q: exact at t = 0 and t = 1, so blocks that share a face

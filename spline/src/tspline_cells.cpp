@@ -65,18 +65,8 @@ struct SubBox {
   int element = 0;  // of the patch, u fastest
 };
 
-// A function's support within the patch as (lo u, hi u, lo v, hi v, lo w, hi w).
+// A function's support within the patch (TFunction::support).
 using Support = std::array<TCoord, 6>;
-
-std::vector<Support> supports(const TMesh& mesh, const std::vector<TFunction>& functions) {
-  std::vector<Support> out(functions.size());
-  for (std::size_t f = 0; f < functions.size(); ++f)
-    for (int d = 0; d < 3; ++d) {
-      out[f][static_cast<std::size_t>(2 * d)] = functions[f].support_lo(d);
-      out[f][static_cast<std::size_t>(2 * d + 1)] = functions[f].support_hi(d, mesh);
-    }
-  return out;
-}
 
 bool meets(const Support& s, const std::array<TCoord, 3>& lo, const std::array<TCoord, 3>& hi) {
   return s[0] < hi[0] && lo[0] < s[1] && s[2] < hi[1] && lo[1] < s[3] && s[4] < hi[2] && lo[2] < s[5];
@@ -124,17 +114,9 @@ void bezier_cells(const TBox& q, const std::vector<TFunction>& functions, const 
 // the per-cell look-up is an index into a table.
 class Bernstein1dTable {
  public:
-  Bernstein1dTable(const PatchContext& ctx, const std::vector<TFunction>& functions) : ctx_(ctx) {
-    for (std::size_t d = 0; d < 3; ++d) {
-      std::map<std::vector<TCoord>, int> ids;
-      knot_id_[d].reserve(functions.size());
-      for (const TFunction& f : functions) {
-        const auto [it, added] = ids.emplace(f.knots[d], static_cast<int>(knots_[d].size()));
-        if (added) knots_[d].push_back(f.knots[d]);
-        knot_id_[d].push_back(it->second);
-      }
-      table_[d].resize(knots_[d].size());
-    }
+  Bernstein1dTable(const PatchContext& ctx, const std::vector<TFunction>& functions)
+      : ctx_(ctx), knots_{{knot_vector_ids(functions, 0), knot_vector_ids(functions, 1), knot_vector_ids(functions, 2)}} {
+    for (std::size_t d = 0; d < 3; ++d) table_[d].resize(knots_[d].vectors.size());
   }
   // The id of the interval [lo, hi] of direction d.
   int interval(int d, TCoord lo, TCoord hi) {
@@ -145,14 +127,14 @@ class Bernstein1dTable {
   }
   int id(int function, int d, int interval) {
     const std::size_t dd = static_cast<std::size_t>(d);
-    std::vector<int>& row = table_[dd][static_cast<std::size_t>(knot_id_[dd][static_cast<std::size_t>(function)])];
+    const int vector = knots_[dd].of_function[static_cast<std::size_t>(function)];
+    std::vector<int>& row = table_[dd][static_cast<std::size_t>(vector)];
     if (row.size() <= static_cast<std::size_t>(interval)) row.resize(intervals_[dd].size(), -1);
     int& slot = row[static_cast<std::size_t>(interval)];
     if (slot < 0) {
       const auto [lo, hi] = intervals_[dd][static_cast<std::size_t>(interval)];
       std::vector<double> knots;
-      for (const TCoord x : knots_[dd][static_cast<std::size_t>(knot_id_[dd][static_cast<std::size_t>(function)])])
-        knots.push_back(ctx_.parameter(d, x));
+      for (const TCoord x : knots_[dd].vectors[static_cast<std::size_t>(vector)]) knots.push_back(ctx_.parameter(d, x));
       slot = static_cast<int>(vectors_.size());
       vectors_.push_back(bspline_bernstein(knots, ctx_.parameter(d, lo), ctx_.parameter(d, hi)));
     }
@@ -162,11 +144,10 @@ class Bernstein1dTable {
 
  private:
   const PatchContext& ctx_;
-  std::array<std::vector<std::vector<TCoord>>, 3> knots_;       // distinct knot vectors per direction
-  std::array<std::vector<int>, 3> knot_id_;                     // per direction and function
+  std::array<KnotVectorIds, 3> knots_;  // per direction
   std::array<std::map<std::pair<TCoord, TCoord>, int>, 3> interval_ids_;
   std::array<std::vector<std::pair<TCoord, TCoord>>, 3> intervals_;
-  std::array<std::vector<std::vector<int>>, 3> table_;          // [knot vector][interval] -> vector id, -1 until made
+  std::array<std::vector<std::vector<int>>, 3> table_;  // [knot vector][interval] -> vector id, -1 until made
   std::vector<Eigen::VectorXd> vectors_;
 };
 
@@ -239,7 +220,9 @@ PatchCells refined_patch_cells(const Patch& patch, const TMesh& mesh, int patch_
   Bernstein1dTable table(ctx, out.functions);
   std::unordered_map<std::vector<int>, int, IntsHash> operator_ids;
   out.elements.reserve(mesh.boxes().size());
-  const std::vector<Support> support = supports(mesh, out.functions);
+  std::vector<Support> support;
+  support.reserve(out.functions.size());
+  for (const TFunction& f : out.functions) support.push_back(f.support(mesh));
   std::vector<int> on_box, key;  // reused from box to box
   std::array<std::vector<TCoord>, 3> cuts;
   std::vector<SubBox> box_cells;

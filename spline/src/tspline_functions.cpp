@@ -151,31 +151,36 @@ bool knot_vectors_overlap(const std::vector<TCoord>& a, const std::vector<TCoord
   return std::equal(first_a, last_a, first_b, last_b);
 }
 
+KnotVectorIds knot_vector_ids(const std::vector<TFunction>& functions, int d) {
+  KnotVectorIds out;
+  std::map<std::vector<TCoord>, int> ids;
+  out.of_function.reserve(functions.size());
+  for (const TFunction& f : functions) {
+    const std::vector<TCoord>& k = f.knots[static_cast<std::size_t>(d)];
+    const auto [it, added] = ids.emplace(k, static_cast<int>(out.vectors.size()));
+    if (added) out.vectors.push_back(k);
+    out.of_function.push_back(it->second);
+  }
+  return out;
+}
+
 namespace {
 
-// The knot vectors of one direction, each distinct one with an id, and
-// whether two of them overlap (asked of many pairs of functions, computed
-// once per pair of vectors).
+// Whether two knot vectors of one direction (knot_vector_ids) differ and
+// overlap: asked of many pairs of functions, computed once per pair of vectors.
 class KnotVectorRelations {
  public:
-  int id(const std::vector<TCoord>& knots) {
-    const auto [it, added] = ids_.emplace(knots, static_cast<int>(vectors_.size()));
-    if (added) vectors_.push_back(&it->first);
-    return it->second;
-  }
-  // Whether vectors a and b differ and overlap.
+  explicit KnotVectorRelations(const std::vector<std::vector<TCoord>>& vectors)
+      : vectors_(vectors), known_(vectors.size() * vectors.size(), -1) {}
   bool partial(int a, int b) {
     if (a == b) return false;
-    const std::size_t n = vectors_.size();
-    if (known_.size() != n * n) known_.assign(n * n, -1);  // sized once every id is given
-    signed char& k = known_[static_cast<std::size_t>(a) * n + static_cast<std::size_t>(b)];
-    if (k < 0) k = knot_vectors_overlap(*vectors_[static_cast<std::size_t>(a)], *vectors_[static_cast<std::size_t>(b)]) ? 1 : 0;
+    signed char& k = known_[static_cast<std::size_t>(a) * vectors_.size() + static_cast<std::size_t>(b)];
+    if (k < 0) k = knot_vectors_overlap(vectors_[static_cast<std::size_t>(a)], vectors_[static_cast<std::size_t>(b)]) ? 1 : 0;
     return k == 1;
   }
 
  private:
-  std::map<std::vector<TCoord>, int> ids_;
-  std::vector<const std::vector<TCoord>*> vectors_;
+  const std::vector<std::vector<TCoord>>& vectors_;
   std::vector<signed char> known_;
 };
 
@@ -190,16 +195,12 @@ std::optional<std::pair<int, int>> dual_compatibility_violation(const TMesh& mes
     std::array<int, 3> knots;
     int function;
   };
-  std::array<KnotVectorRelations, 3> relations;
+  const std::array<KnotVectorIds, 3> ids{{knot_vector_ids(functions, 0), knot_vector_ids(functions, 1), knot_vector_ids(functions, 2)}};
+  std::array<KnotVectorRelations, 3> relations{{KnotVectorRelations(ids[0].vectors), KnotVectorRelations(ids[1].vectors),
+                                                KnotVectorRelations(ids[2].vectors)}};
   std::vector<Row> rows(functions.size());
-  for (std::size_t f = 0; f < functions.size(); ++f) {
-    rows[f].function = static_cast<int>(f);
-    for (int d = 0; d < 3; ++d) {
-      rows[f].support[static_cast<std::size_t>(2 * d)] = functions[f].support_lo(d);
-      rows[f].support[static_cast<std::size_t>(2 * d + 1)] = functions[f].support_hi(d, mesh);
-      rows[f].knots[static_cast<std::size_t>(d)] = relations[static_cast<std::size_t>(d)].id(functions[f].knots[static_cast<std::size_t>(d)]);
-    }
-  }
+  for (std::size_t f = 0; f < functions.size(); ++f)
+    rows[f] = {functions[f].support(mesh), {{ids[0].of_function[f], ids[1].of_function[f], ids[2].of_function[f]}}, static_cast<int>(f)};
   std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.support[0] < b.support[0]; });
   for (std::size_t x = 0; x < rows.size(); ++x) {
     const std::array<TCoord, 6>& sf = rows[x].support;

@@ -26,7 +26,21 @@ struct TFunction {
   TCoord support_hi(int d, const TMesh& mesh) const {
     return std::min(mesh.extent(d), knots[static_cast<std::size_t>(d)].back());
   }
+  // The support as one box (lo u, hi u, lo v, hi v, lo w, hi w).
+  std::array<TCoord, 6> support(const TMesh& mesh) const {
+    std::array<TCoord, 6> s{};
+    for (int d = 0; d < 3; ++d) s[static_cast<std::size_t>(2 * d)] = support_lo(d), s[static_cast<std::size_t>(2 * d + 1)] = support_hi(d, mesh);
+    return s;
+  }
 };
+
+// The distinct knot vectors of the functions in direction d, and per
+// function the index of its own among them (in order of first appearance).
+struct KnotVectorIds {
+  std::vector<std::vector<TCoord>> vectors;
+  std::vector<int> of_function;
+};
+KnotVectorIds knot_vector_ids(const std::vector<TFunction>& functions, int d);
 
 // Every function of the mesh, ordered by anchor (w slowest, u fastest).
 // On the initial tensor grid they are the patch's B-splines in its own

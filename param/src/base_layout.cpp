@@ -6,13 +6,6 @@
 
 namespace igaprep::param {
 
-bool inside_domain(const RectilinearDomain& domain, const Eigen::Vector2d& p) {
-  if (!(p.x() > 0.0 && p.x() < domain.width && p.y() > 0.0 && p.y() < domain.height)) return false;
-  for (const auto& h : domain.holes)
-    if (p.x() >= h(0) && p.x() <= h(2) && p.y() >= h(1) && p.y() <= h(3)) return false;
-  return true;
-}
-
 namespace {
 
 // The four sides of a box (umin, vmin, umax, vmax) in DomainSide order, each
@@ -36,8 +29,15 @@ BaseLayout base_layout(const InsetBase& base, double max_aspect) {
   L.rectangles = domain_rectangles(L.domain, max_aspect);
   const RectilinearDomain& D = L.domain;
 
-  // The domain's own sides: outward of the outer rectangle, into each hole.
-  for (const auto& e : box_sides(Eigen::Vector4d(0.0, 0.0, D.width, D.height))) L.domain_edges.push_back(e);
+  // The domain's own sides: outward of the outer boundary (the rectangle's
+  // sides and its arms'), into each hole.
+  for (const DomainSide side : {DomainSide::Bottom, DomainSide::Right, DomainSide::Top, DomainSide::Left}) {
+    const std::vector<Eigen::Vector2d> pts = side_walk(D, side);
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+      const Eigen::Vector2d d = (pts[i + 1] - pts[i]).normalized();
+      L.domain_edges.push_back({pts[i], pts[i + 1], Eigen::Vector2d(d.y(), -d.x())});
+    }
+  }
   for (const auto& h : D.holes)
     for (auto e : box_sides(h)) {
       e.outward = -e.outward;

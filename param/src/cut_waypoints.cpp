@@ -9,24 +9,13 @@
 
 #include "igaprep/core/error.h"
 #include "igaprep/param/cut_loops.h"
+#include "edge_graph.h"
 
 namespace igaprep::param {
 namespace {
 
-using Adjacency = std::vector<std::vector<std::pair<int, double>>>;
-
-Adjacency edge_graph(const mesh::TriMesh& m) {
-  Adjacency adj(static_cast<std::size_t>(m.V.rows()));
-  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int a = m.F(f, k), b = m.F(f, (k + 1) % 3);
-      // On a closed oriented surface each edge runs a -> b in one face and
-      // b -> a in the other: every neighbour is listed once.
-      const double len = (m.V.row(a) - m.V.row(b)).norm();
-      adj[static_cast<std::size_t>(a)].emplace_back(b, len);
-    }
-  return adj;
-}
+using Adjacency = detail::EdgeGraph;
+using detail::edge_graph;
 
 int nearest_vertex(const mesh::TriMesh& m, const Eigen::Vector3d& p) {
   Eigen::Index best;
@@ -36,29 +25,7 @@ int nearest_vertex(const mesh::TriMesh& m, const Eigen::Vector3d& p) {
 
 // Shortest edge path from a to b (both included), Dijkstra on edge lengths.
 std::vector<int> shortest_path(const Adjacency& adj, int a, int b) {
-  const double inf = std::numeric_limits<double>::infinity();
-  std::vector<double> dist(adj.size(), inf);
-  std::vector<int> prev(adj.size(), -1);
-  using Item = std::pair<double, int>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-  dist[static_cast<std::size_t>(a)] = 0.0;
-  queue.emplace(0.0, a);
-  while (!queue.empty()) {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    if (v == b) break;
-    if (d > dist[static_cast<std::size_t>(v)]) continue;
-    for (const auto& [w, len] : adj[static_cast<std::size_t>(v)])
-      if (d + len < dist[static_cast<std::size_t>(w)]) {
-        dist[static_cast<std::size_t>(w)] = d + len;
-        prev[static_cast<std::size_t>(w)] = v;
-        queue.emplace(d + len, w);
-      }
-  }
-  std::vector<int> path;
-  for (int v = b; v != -1; v = prev[static_cast<std::size_t>(v)]) path.push_back(v);
-  std::reverse(path.begin(), path.end());
-  return path;
+  return detail::path_to(detail::shortest_paths(adj, a, b), b);
 }
 
 // The loop through the snapped waypoints, as a vertex cycle.

@@ -77,6 +77,7 @@ int split_sheet_along_line(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, int axis, 
 
 double narrowest_band(const RectilinearDomain& D) {
   double band = std::min(D.width, D.height);
+  for (const DomainArm& arm : D.arms) band = std::min(band, arm.to - arm.from);
   for (const auto& h : D.holes) {
     band = std::min({band, h(0), h(1), D.width - h(2), D.height - h(3)});
     for (const auto& g : D.holes) {
@@ -184,7 +185,9 @@ bool same_line(double x, double c) { return std::abs(x - c) <= 1e-12 * (1.0 + st
 // outer sides and the holes' sides).
 std::array<bool, 2> on_domain_lines(const RectilinearDomain& D, const Eigen::Vector2d& p) {
   std::vector<double> us{0.0, D.width}, vs{0.0, D.height};
-  for (const auto& h : D.holes) us.push_back(h(0)), us.push_back(h(2)), vs.push_back(h(1)), vs.push_back(h(3));
+  std::vector<Eigen::Vector4d> boxes = D.holes;
+  for (const DomainArm& arm : D.arms) boxes.push_back(arm_box(D, arm));
+  for (const auto& h : boxes) us.push_back(h(0)), us.push_back(h(2)), vs.push_back(h(1)), vs.push_back(h(3));
   std::array<bool, 2> on{{false, false}};
   for (double c : us) on[0] = on[0] || same_line(p.x(), c);
   for (double c : vs) on[1] = on[1] || same_line(p.y(), c);
@@ -244,6 +247,19 @@ InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polyc
   for (const auto& h : D.holes) {
     const double hl = place(0, h(0) - d), hr = place(0, h(2) + d), hb = place(1, h(1) - d), ht = place(1, h(3) + d);
     out.domain.holes.emplace_back(hl - left, hb - bottom, hr - left, ht - bottom);
+  }
+  // An arm's sides and tip move in by d; it still joins the moved rectangle.
+  for (const DomainArm& arm : D.arms) {
+    const Eigen::Vector4d b = arm_box(D, arm);
+    // Box entry k is a u line (k even) or a v line; the one the arm joins
+    // the rectangle by is the rectangle's moved side.
+    const int joined = arm.side == DomainSide::Bottom ? 3 : arm.side == DomainSide::Top ? 1 : arm.side == DomainSide::Left ? 2 : 0;
+    const std::array<double, 4> joined_value{right, top, left, bottom};
+    Eigen::Vector4d inset;
+    for (int k = 0; k < 4; ++k)
+      inset(k) = k == joined ? joined_value[static_cast<std::size_t>(k)] : place(k % 2, b(k) + (k < 2 ? d : -d));
+    inset -= Eigen::Vector4d(left, bottom, left, bottom);
+    out.domain.arms.push_back(arm_from_box(arm.side, inset, out.domain.width, out.domain.height));
   }
   // The inset domain, shifted so that its outer rectangle starts at (0, 0).
   for (Eigen::Index v = 0; v < out.uv.rows(); ++v) out.uv.row(v) -= Eigen::RowVector2d(left, bottom);

@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 #include <unordered_map>
+#include <unordered_set>
 
 #include <Eigen/Geometry>
 #include <Eigen/Eigenvalues>
@@ -15,6 +16,8 @@
 #include "igaprep/core/edge_key.h"
 #include "igaprep/core/error.h"
 #include "igaprep/param/harmonic_field.h"
+#include "igaprep/param/sheet_lobes.h"
+#include "edge_graph.h"
 #include "igaprep/param/stiffness_matrix.h"
 
 namespace igaprep::param {
@@ -209,72 +212,161 @@ int split_boundary_ears(mesh::TriMesh& m) {
   return total;
 }
 
-std::vector<PolycubeLoop> automatic_corners(const mesh::TriMesh& m, const std::vector<std::vector<int>>& loops,
-                                            const SheetFrame& fr) {
-  std::vector<PolycubeLoop> out = make_loops(m, loops, fr);
-  for (PolycubeLoop& L : out) {
-    const std::size_t n = L.vertices.size();
-    const std::vector<double> s = arc_lengths(m, L.vertices);
-    Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    for (int v : L.vertices) c += P(m, v);
-    c /= static_cast<double>(n);
-    // The starts of the segments in loop order: outer BL, BR, TR, TL; holes BR, BL, TL, TR.
-    const std::array<Eigen::Vector2d, 4> dirs =
-        L.outer ? std::array<Eigen::Vector2d, 4>{Eigen::Vector2d(-1, -1), Eigen::Vector2d(1, -1), Eigen::Vector2d(1, 1),
-                                                 Eigen::Vector2d(-1, 1)}
-                : std::array<Eigen::Vector2d, 4>{Eigen::Vector2d(1, -1), Eigen::Vector2d(-1, -1), Eigen::Vector2d(-1, 1),
-                                                 Eigen::Vector2d(1, 1)};
-    std::array<int, 4> pos{};
-    for (int k = 0; k < 4; ++k) {
-      const Eigen::Vector3d d = dirs[k](0) * fr.e1 + dirs[k](1) * fr.e2;
-      double best = -1e300;
-      for (std::size_t i = 0; i < n; ++i) {
-        const double x = d.dot(P(m, L.vertices[i]) - c);
-        if (x > best + 1e-12) {
-          best = x;
-          pos[k] = static_cast<int>(i);
-        }
+namespace {
+
+// Arc length along a loop from position a forward to position b.
+double arc_between(const std::vector<double>& s, int a, int b) {
+  return a <= b ? s[static_cast<std::size_t>(b)] - s[static_cast<std::size_t>(a)]
+                : s.back() - s[static_cast<std::size_t>(a)] + s[static_cast<std::size_t>(b)];
+}
+
+// Loop positions on a lobe's boundary, its two ends included.
+std::vector<char> lobe_mask(std::size_t n, const std::vector<SheetLobe>& lobes) {
+  std::vector<char> on(n, 0);
+  for (const SheetLobe& l : lobes)
+    for (std::size_t p = static_cast<std::size_t>(l.start);; p = (p + 1) % n) {
+      on[p] = 1;
+      if (p == static_cast<std::size_t>(l.end)) break;
+    }
+  return on;
+}
+
+// Four corners of L outside the masked positions: the extreme points along
+// the frame's diagonals. Returns false (corners evenly spread by arc length
+// instead, or none) when those are not four in order with long enough
+// segments.
+bool place_corners(const mesh::TriMesh& m, PolycubeLoop& L, const SheetFrame& fr, const std::vector<char>& masked) {
+  const std::size_t n = L.vertices.size();
+  const std::vector<double> s = arc_lengths(m, L.vertices);
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  int count = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!masked[i]) c += P(m, L.vertices[i]), ++count;
+  c /= static_cast<double>(std::max(count, 1));
+  // The starts of the segments in loop order: outer BL, BR, TR, TL; holes BR, BL, TL, TR.
+  const std::array<Eigen::Vector2d, 4> dirs =
+      L.outer ? std::array<Eigen::Vector2d, 4>{Eigen::Vector2d(-1, -1), Eigen::Vector2d(1, -1), Eigen::Vector2d(1, 1),
+                                               Eigen::Vector2d(-1, 1)}
+              : std::array<Eigen::Vector2d, 4>{Eigen::Vector2d(1, -1), Eigen::Vector2d(-1, -1), Eigen::Vector2d(-1, 1),
+                                               Eigen::Vector2d(1, 1)};
+  std::array<int, 4> pos{};
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::Vector3d d = dirs[k](0) * fr.e1 + dirs[k](1) * fr.e2;
+    double best = -1e300;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (masked[i]) continue;
+      const double x = d.dot(P(m, L.vertices[i]) - c);
+      if (x > best + 1e-12) {
+        best = x;
+        pos[k] = static_cast<int>(i);
       }
     }
-    // Rotate so that the first corner has the smallest position, then require increasing order.
-    const int first = static_cast<int>(std::min_element(pos.begin(), pos.end()) - pos.begin());
-    std::array<int, 4> rot{};
-    for (int k = 0; k < 4; ++k) rot[k] = pos[(first + k) % 4];
-    const bool increasing = rot[0] < rot[1] && rot[1] < rot[2] && rot[2] < rot[3];
-    // A long sheet (a blade, a propeller) keeps its corners at its narrow ends
-    // even when the end segments are short.
-    Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
-    for (int v : L.vertices) {
-      const Eigen::Vector2d q(fr.e1.dot(P(m, v) - c), fr.e2.dot(P(m, v) - c));
-      lo = lo.cwiseMin(q);
-      hi = hi.cwiseMax(q);
-    }
-    const bool elongated = hi(0) - lo(0) > 3.0 * (hi(1) - lo(1));
-    if (increasing && (corners_ok(s, rot, n, 0.05) || (elongated && corners_ok(s, rot, n, 0.01)))) {
-      L.corners = rot;
-    } else {  // evenly by arc length from the first extreme point
-      const double total = s.back();
-      const double s0 = s[static_cast<std::size_t>(pos[0])];
-      std::array<int, 4> even{};
-      for (int k = 0; k < 4; ++k) {
-        const double target = std::fmod(s0 + k * total / 4.0, total);
-        std::size_t bi = 0;
-        double bd = 1e300;
-        for (std::size_t i = 0; i < n; ++i) {
-          const double d = std::min(std::abs(s[i] - target), total - std::abs(s[i] - target));
-          if (d < bd) {
-            bd = d;
-            bi = i;
-          }
-        }
-        even[k] = static_cast<int>(bi);
-      }
-      std::sort(even.begin(), even.end());
-      if (!corners_ok(s, even, n, 0.0))
-        throw bad_input("polycube: boundary loop with " + std::to_string(n) + " vertices is too short for four corners");
-      L.corners = even;
-    }
+  }
+  // Rotate so that the first corner has the smallest position, then require increasing order.
+  const int first = static_cast<int>(std::min_element(pos.begin(), pos.end()) - pos.begin());
+  std::array<int, 4> rot{};
+  for (int k = 0; k < 4; ++k) rot[k] = pos[(first + k) % 4];
+  const bool increasing = rot[0] < rot[1] && rot[1] < rot[2] && rot[2] < rot[3];
+  // A long sheet (a blade, a propeller) keeps its corners at its narrow ends
+  // even when the end segments are short.
+  Eigen::Vector2d lo(1e300, 1e300), hi(-1e300, -1e300);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (masked[i]) continue;
+    const Eigen::Vector2d q(fr.e1.dot(P(m, L.vertices[i]) - c), fr.e2.dot(P(m, L.vertices[i]) - c));
+    lo = lo.cwiseMin(q);
+    hi = hi.cwiseMax(q);
+  }
+  const bool elongated = hi(0) - lo(0) > 3.0 * (hi(1) - lo(1));
+  if (increasing && (corners_ok(s, rot, n, 0.05) || (elongated && corners_ok(s, rot, n, 0.01)))) {
+    L.corners = rot;
     assign_sides(m, L, fr);
+    return true;
+  }
+  if (std::find(masked.begin(), masked.end(), 1) != masked.end()) return false;
+  // Evenly by arc length from the first extreme point.
+  const double total = s.back();
+  const double s0 = s[static_cast<std::size_t>(pos[0])];
+  std::array<int, 4> even{};
+  for (int k = 0; k < 4; ++k) {
+    const double target = std::fmod(s0 + k * total / 4.0, total);
+    std::size_t bi = 0;
+    double bd = 1e300;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double d = std::min(std::abs(s[i] - target), total - std::abs(s[i] - target));
+      if (d < bd) {
+        bd = d;
+        bi = i;
+      }
+    }
+    even[k] = static_cast<int>(bi);
+  }
+  std::sort(even.begin(), even.end());
+  if (!corners_ok(s, even, n, 0.0))
+    throw bad_input("polycube: boundary loop with " + std::to_string(n) + " vertices is too short for four corners");
+  L.corners = even;
+  assign_sides(m, L, fr);
+  return false;
+}
+
+// Each lobe as an arm: its length how far the lobe reaches from its neck's
+// middle, its width the lobe's area over that (at least the neck), its tip
+// corners splitting the lobe's boundary as side, tip, side in proportion to
+// length, width, length. A lobe whose pieces would have fewer than two edges
+// gets no arm.
+std::vector<LoopArm> loop_arms(const mesh::TriMesh& m, const PolycubeLoop& L, const std::vector<SheetLobe>& lobes) {
+  const std::size_t n = L.vertices.size();
+  const std::vector<double> s = arc_lengths(m, L.vertices);
+  auto edges = [&](int a, int b) { return (b - a + static_cast<int>(n)) % static_cast<int>(n); };
+  std::vector<LoopArm> out;
+  for (const SheetLobe& lobe : lobes) {
+    const Eigen::Vector3d neck_mid = 0.5 * (P(m, L.vertices[lobe.start]) + P(m, L.vertices[lobe.end]));
+    LoopArm arm;
+    for (std::size_t p = static_cast<std::size_t>(lobe.start); p != static_cast<std::size_t>(lobe.end); p = (p + 1) % n)
+      arm.length = std::max(arm.length, (P(m, L.vertices[p]) - neck_mid).norm());
+    if (!(arm.length > 0.0)) continue;
+    arm.width = std::max(lobe.neck, lobe.area / arm.length);
+    const double arc = arc_between(s, lobe.start, lobe.end);
+    const double tip = arc * arm.width / (2.0 * arm.length + arm.width);
+    arm.corners = {lobe.start, lobe.start, lobe.start, lobe.end};
+    for (int k : {1, 2}) {
+      const double target = k == 1 ? 0.5 * (arc - tip) : 0.5 * (arc + tip);
+      double best = 1e300;
+      for (std::size_t p = static_cast<std::size_t>(lobe.start); p != static_cast<std::size_t>(lobe.end); p = (p + 1) % n) {
+        const double d = std::abs(arc_between(s, lobe.start, static_cast<int>(p)) - target);
+        if (d < best) best = d, arm.corners[static_cast<std::size_t>(k)] = static_cast<int>(p);
+      }
+    }
+    const auto& c = arm.corners;
+    if (edges(c[0], c[1]) >= 2 && edges(c[1], c[2]) >= 2 && edges(c[2], c[3]) >= 2 &&
+        edges(c[0], c[3]) == edges(c[0], c[1]) + edges(c[1], c[2]) + edges(c[2], c[3]))
+      out.push_back(arm);
+  }
+  // In loop order from corner 0.
+  std::sort(out.begin(), out.end(), [&](const LoopArm& x, const LoopArm& y) {
+    return edges(L.corners[0], x.corners[0]) < edges(L.corners[0], y.corners[0]);
+  });
+  return out;
+}
+
+}  // namespace
+
+std::vector<PolycubeLoop> automatic_corners(const mesh::TriMesh& m, const std::vector<std::vector<int>>& loops,
+                                            const SheetFrame& fr, bool arms) {
+  std::vector<PolycubeLoop> out = make_loops(m, loops, fr);
+  for (std::size_t l = 0; l < out.size(); ++l) {
+    PolycubeLoop& L = out[l];
+    const std::size_t n = L.vertices.size();
+    if (arms && L.outer) {
+      std::vector<std::vector<int>> others;
+      for (std::size_t k = 0; k < loops.size(); ++k)
+        if (k != l) others.push_back(loops[k]);
+      const std::vector<SheetLobe> lobes = find_lobes(m, L.vertices, others);
+      if (!lobes.empty() && place_corners(m, L, fr, lobe_mask(n, lobes))) {
+        L.arms = loop_arms(m, L, lobes);
+        continue;
+      }
+    }
+    place_corners(m, L, fr, std::vector<char>(n, 0));
   }
   return out;
 }
@@ -321,25 +413,27 @@ int refine_hole_corners(mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops
       for (int k = 0; k < 3; ++k) ef[edge_key(m.F(f, k), m.F(f, (k + 1) % 3))].push_back(f);
     std::map<std::uint64_t, int> mid;
     std::vector<Eigen::RowVector3d> newV;
+    std::vector<int> reflex;
     for (const PolycubeLoop& L : loops) {
-      if (L.outer) continue;
-      for (int k = 0; k < 4; ++k) {
-        const int c = L.vertices[static_cast<std::size_t>(L.corners[k])];
-        std::vector<std::uint64_t> opposite;
-        int fan = 0;
-        for (int f = 0; f < m.F.rows(); ++f)
-          for (int j = 0; j < 3; ++j)
-            if (m.F(f, j) == c) {
-              ++fan;
-              opposite.push_back(edge_key(m.F(f, (j + 1) % 3), m.F(f, (j + 2) % 3)));
-            }
-        if (fan >= min_fan) continue;
-        for (std::uint64_t e : opposite)
-          if (ef[e].size() == 2 && !mid.count(e)) {
-            mid[e] = static_cast<int>(m.V.rows() + static_cast<Eigen::Index>(newV.size()));
-            newV.push_back(0.5 * (m.V.row(static_cast<int>(e >> 32)) + m.V.row(static_cast<int>(e & 0xffffffffu))));
+      for (int k = 0; k < 4 && !L.outer; ++k) reflex.push_back(L.vertices[static_cast<std::size_t>(L.corners[k])]);
+      for (const LoopArm& arm : L.arms)
+        for (int k : {0, 3}) reflex.push_back(L.vertices[static_cast<std::size_t>(arm.corners[static_cast<std::size_t>(k)])]);
+    }
+    for (const int c : reflex) {
+      std::vector<std::uint64_t> opposite;
+      int fan = 0;
+      for (int f = 0; f < m.F.rows(); ++f)
+        for (int j = 0; j < 3; ++j)
+          if (m.F(f, j) == c) {
+            ++fan;
+            opposite.push_back(edge_key(m.F(f, (j + 1) % 3), m.F(f, (j + 2) % 3)));
           }
-      }
+      if (fan >= min_fan) continue;
+      for (std::uint64_t e : opposite)
+        if (ef[e].size() == 2 && !mid.count(e)) {
+          mid[e] = static_cast<int>(m.V.rows() + static_cast<Eigen::Index>(newV.size()));
+          newV.push_back(0.5 * (m.V.row(static_cast<int>(e >> 32)) + m.V.row(static_cast<int>(e & 0xffffffffu))));
+        }
     }
     if (newV.empty()) return total;
     total += static_cast<int>(newV.size());
@@ -402,19 +496,80 @@ void grow_to_fit_holes(const mesh::TriMesh& m, const std::vector<PolycubeLoop>& 
   short_side = std::max(short_side, area / long_side);
 }
 
+namespace {
+
+bool horizontal(DomainSide side) { return side == DomainSide::Bottom || side == DomainSide::Top; }
+
+// Number of loop edges from position a forward to position b.
+int edges_between(std::size_t n, int a, int b) { return (b - a + static_cast<int>(n)) % static_cast<int>(n); }
+
+bool arm_in_segment(const PolycubeLoop& L, const LoopArm& arm, int k) {
+  const std::size_t n = L.vertices.size();
+  return edges_between(n, L.corners[k], arm.corners[0]) < edges_between(n, L.corners[k], L.corners[(k + 1) % 4]);
+}
+
+// Length of segment k of a loop, a lobe's boundary counted as its arm's width.
+double segment_length(const PolycubeLoop& L, const std::vector<double>& s, int k) {
+  double length = arc_between(s, L.corners[k], L.corners[(k + 1) % 4]);
+  for (const LoopArm& arm : L.arms)
+    if (arm_in_segment(L, arm, k)) length -= arc_between(s, arm.corners[0], arm.corners[3]) - arm.width;
+  return length;
+}
+
+// Along one side: the gaps before, between and after its arms, and the
+// arms' widths, made to add up to the side's length with every gap at least
+// a third of the arms beside it (fingers side by side leave only a short
+// boundary between them; two reflex corners that close fold the map).
+void spread_on_side(std::vector<double>& gaps, std::vector<double>& widths, double side) {
+  for (std::size_t i = 0; i < gaps.size(); ++i) {
+    double beside = 0.0;
+    if (i > 0) beside = std::max(beside, widths[i - 1]);
+    if (i < widths.size()) beside = std::max(beside, widths[i]);
+    gaps[i] = std::max(gaps[i], beside / 3.0);
+  }
+  double total = 0.0;
+  for (double g : gaps) total += g;
+  for (double w : widths) total += w;
+  for (double& g : gaps) g *= side / total;
+  for (double& w : widths) w *= side / total;
+}
+
+// The outer loop's arms on its domain: along each side in the proportions of
+// the loop's segment (each lobe counted as its arm's width), spread.
+std::vector<DomainArm> domain_arms(const mesh::TriMesh& m, const PolycubeLoop& L, const RectilinearDomain& dom) {
+  const std::vector<double> s = arc_lengths(m, L.vertices);
+  std::vector<DomainArm> out;
+  for (int k = 0; k < 4; ++k) {
+    std::vector<double> gaps, widths, lengths;
+    int at = L.corners[k];
+    for (const LoopArm& arm : L.arms) {
+      if (!arm_in_segment(L, arm, k)) continue;
+      gaps.push_back(arc_between(s, at, arm.corners[0]));
+      widths.push_back(arm.width);
+      lengths.push_back(arm.length);
+      at = arm.corners[3];
+    }
+    if (widths.empty()) continue;
+    gaps.push_back(arc_between(s, at, L.corners[(k + 1) % 4]));
+    spread_on_side(gaps, widths, horizontal(L.sides[k]) ? dom.width : dom.height);
+    double t = 0.0;
+    for (std::size_t i = 0; i < widths.size(); ++i) {
+      t += gaps[i];
+      out.push_back({L.sides[k], t, t + widths[i], lengths[i]});
+      t += widths[i];
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 RectilinearDomain rectilinear_domain(const mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops) {
   RectilinearDomain dom;
-  auto seg_length = [&](const PolycubeLoop& L, int k) {
-    const std::vector<double> s = arc_lengths(m, L.vertices);
-    const int a = L.corners[k], b = L.corners[(k + 1) % 4];
-    return k < 3 ? s[b] - s[a] : s.back() - s[a] + s[b];
-  };
   auto sizes = [&](const PolycubeLoop& L) {
+    const std::vector<double> s = arc_lengths(m, L.vertices);
     double w = 0.0, h = 0.0;
-    for (int k = 0; k < 4; ++k) {
-      const bool horizontal = L.sides[k] == DomainSide::Bottom || L.sides[k] == DomainSide::Top;
-      (horizontal ? w : h) += 0.5 * seg_length(L, k);
-    }
+    for (int k = 0; k < 4; ++k) (horizontal(L.sides[k]) ? w : h) += 0.5 * segment_length(L, s, k);
     return Eigen::Vector2d(w, h);
   };
   int outer = -1;
@@ -424,8 +579,9 @@ RectilinearDomain rectilinear_domain(const mesh::TriMesh& m, const std::vector<P
   const Eigen::Vector2d WH = sizes(loops[outer]);
   dom.width = WH(0);
   dom.height = WH(1);
+  if (loops.size() > 1) grow_to_fit_holes(m, loops, sizes, dom);
+  dom.arms = domain_arms(m, loops[outer], dom);
   if (loops.size() == 1) return dom;
-  grow_to_fit_holes(m, loops, sizes, dom);
 
   // Harmonic map with the outer loop on the rectangle and the holes free.
   RectilinearDomain outer_only = dom;
@@ -505,16 +661,128 @@ RectilinearDomain rectilinear_domain(const mesh::TriMesh& m, const std::vector<P
   return dom;
 }
 
+namespace {
+
+Eigen::Vector2d outward_normal(DomainSide side) {
+  switch (side) {
+    case DomainSide::Bottom: return {0.0, -1.0};
+    case DomainSide::Right: return {1.0, 0.0};
+    case DomainSide::Top: return {0.0, 1.0};
+    case DomainSide::Left: return {-1.0, 0.0};
+  }
+  return {0.0, 0.0};
+}
+
+// The side of the outer rectangle a point moves along (its first corner and
+// unit direction in the loop's sense).
+std::pair<Eigen::Vector2d, Eigen::Vector2d> side_line(const RectilinearDomain& d, DomainSide side) {
+  switch (side) {
+    case DomainSide::Bottom: return {Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(1.0, 0.0)};
+    case DomainSide::Right: return {Eigen::Vector2d(d.width, 0.0), Eigen::Vector2d(0.0, 1.0)};
+    case DomainSide::Top: return {Eigen::Vector2d(d.width, d.height), Eigen::Vector2d(-1.0, 0.0)};
+    case DomainSide::Left: return {Eigen::Vector2d(0.0, d.height), Eigen::Vector2d(0.0, -1.0)};
+  }
+  return {};
+}
+
+// The domain side a straight piece of boundary is on, by the direction it
+// leaves the domain (outer loop: the domain on the left of travel).
+DomainSide side_of_travel(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d d = b - a;
+  if (std::abs(d.x()) >= std::abs(d.y())) return d.x() > 0.0 ? DomainSide::Bottom : DomainSide::Top;
+  return d.y() > 0.0 ? DomainSide::Right : DomainSide::Left;
+}
+
+// The outer loop's segments: per side of the rectangle, the pieces between
+// its corners and its arms' corners.
+void outer_segments(const PolycubeLoop& L, int loop, const RectilinearDomain& dom, std::vector<BoundarySegment>& segs) {
+  const std::size_t n = L.vertices.size();
+  for (int k = 0; k < 4; ++k) {
+    std::vector<int> pos{L.corners[k]};
+    for (const LoopArm& arm : L.arms)
+      if (arm_in_segment(L, arm, k)) pos.insert(pos.end(), arm.corners.begin(), arm.corners.end());
+    pos.push_back(L.corners[(k + 1) % 4]);
+    const std::vector<Eigen::Vector2d> pts = side_walk(dom, L.sides[k]);
+    if (pts.size() != pos.size()) throw internal_error("polycube: an arm of the domain has no lobe on its side of the loop");
+    for (std::size_t i = 0; i + 1 < pos.size(); ++i) {
+      BoundarySegment seg;
+      seg.loop = loop;
+      seg.side = side_of_travel(pts[i], pts[i + 1]);
+      seg.u_iso = !horizontal(seg.side);
+      seg.value = seg.u_iso ? pts[i].x() : pts[i].y();
+      for (std::size_t p = static_cast<std::size_t>(pos[i]);; p = (p + 1) % n) {
+        seg.vertices.push_back(L.vertices[p]);
+        if (static_cast<int>(p) == pos[i + 1] && seg.vertices.size() > 1) break;
+      }
+      segs.push_back(seg);
+    }
+  }
+}
+
+}  // namespace
+
+Eigen::Vector4d arm_box(const RectilinearDomain& d, const DomainArm& arm) {
+  const auto [start, dir] = side_line(d, arm.side);
+  const Eigen::Vector2d a = start + arm.from * dir, b = start + arm.to * dir;
+  const Eigen::Vector2d c = b + arm.length * outward_normal(arm.side);
+  return Eigen::Vector4d(std::min(a.x(), c.x()), std::min(a.y(), c.y()), std::max(a.x(), c.x()), std::max(a.y(), c.y()));
+}
+
+DomainArm arm_from_box(DomainSide side, const Eigen::Vector4d& box, double width, double height) {
+  DomainArm a;
+  a.side = side;
+  switch (side) {
+    case DomainSide::Bottom: a.from = box(0), a.to = box(2), a.length = -box(1); break;
+    case DomainSide::Right: a.from = box(1), a.to = box(3), a.length = box(2) - width; break;
+    case DomainSide::Top: a.from = width - box(2), a.to = width - box(0), a.length = box(3) - height; break;
+    case DomainSide::Left: a.from = height - box(3), a.to = height - box(1), a.length = -box(0); break;
+  }
+  return a;
+}
+
+bool inside_domain(const RectilinearDomain& domain, const Eigen::Vector2d& p) {
+  bool in = p.x() > 0.0 && p.x() < domain.width && p.y() > 0.0 && p.y() < domain.height;
+  for (const DomainArm& arm : domain.arms) {
+    // Open except where it joins the rectangle (that line is inside).
+    const Eigen::Vector4d b = arm_box(domain, arm);
+    const bool u_in = p.x() > b(0) && p.x() < b(2), v_in = p.y() > b(1) && p.y() < b(3);
+    switch (arm.side) {
+      case DomainSide::Bottom: in = in || (u_in && p.y() > b(1) && p.y() <= b(3)); break;
+      case DomainSide::Top: in = in || (u_in && p.y() >= b(1) && p.y() < b(3)); break;
+      case DomainSide::Left: in = in || (v_in && p.x() > b(0) && p.x() <= b(2)); break;
+      case DomainSide::Right: in = in || (v_in && p.x() >= b(0) && p.x() < b(2)); break;
+    }
+  }
+  if (!in) return false;
+  for (const auto& h : domain.holes)
+    if (p.x() >= h(0) && p.x() <= h(2) && p.y() >= h(1) && p.y() <= h(3)) return false;
+  return true;
+}
+
+std::vector<Eigen::Vector2d> side_walk(const RectilinearDomain& d, DomainSide side) {
+  const auto [start, dir] = side_line(d, side);
+  const Eigen::Vector2d out = outward_normal(side);
+  std::vector<Eigen::Vector2d> pts{start};
+  for (const DomainArm& arm : d.arms) {
+    if (arm.side != side) continue;
+    const Eigen::Vector2d a = start + arm.from * dir, b = start + arm.to * dir;
+    pts.insert(pts.end(), {a, a + arm.length * out, b + arm.length * out, b});
+  }
+  pts.push_back(start + (horizontal(side) ? d.width : d.height) * dir);
+  return pts;
+}
+
 std::vector<BoundarySegment> boundary_segments(const std::vector<PolycubeLoop>& loops, const RectilinearDomain& dom) {
   std::vector<BoundarySegment> segs;
   int hole = 0;
   for (std::size_t l = 0; l < loops.size(); ++l) {
     const PolycubeLoop& L = loops[l];
-    Eigen::Vector4d box(0.0, 0.0, dom.width, dom.height);
-    if (!L.outer) {
-      if (hole >= static_cast<int>(dom.holes.size())) throw bad_input("polycube: more inner loops than holes");
-      box = dom.holes[static_cast<std::size_t>(hole++)];
+    if (L.outer) {
+      outer_segments(L, static_cast<int>(l), dom, segs);
+      continue;
     }
+    if (hole >= static_cast<int>(dom.holes.size())) throw bad_input("polycube: more inner loops than holes");
+    const Eigen::Vector4d box = dom.holes[static_cast<std::size_t>(hole++)];
     const std::size_t n = L.vertices.size();
     for (int k = 0; k < 4; ++k) {
       BoundarySegment s;
@@ -705,7 +973,9 @@ void split_long_intervals(std::vector<double>& lines, const std::vector<double>&
 
 std::vector<Eigen::Vector4d> domain_rectangles(const RectilinearDomain& dom, double max_aspect) {
   std::vector<double> xs{0.0, dom.width}, ys{0.0, dom.height};
-  for (const auto& h : dom.holes) {
+  std::vector<Eigen::Vector4d> boxes = dom.holes;
+  for (const DomainArm& arm : dom.arms) boxes.push_back(arm_box(dom, arm));
+  for (const auto& h : boxes) {
     xs.push_back(h(0));
     xs.push_back(h(2));
     ys.push_back(h(1));
@@ -721,21 +991,39 @@ std::vector<Eigen::Vector4d> domain_rectangles(const RectilinearDomain& dom, dou
   std::vector<Eigen::Vector4d> rects;
   for (std::size_t j = 0; j + 1 < ys.size(); ++j)
     for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
-      const double cx = 0.5 * (xs[i] + xs[i + 1]), cy = 0.5 * (ys[j] + ys[j + 1]);
-      bool in_hole = false;
-      for (const auto& h : dom.holes)
-        if (cx > h(0) && cx < h(2) && cy > h(1) && cy < h(3)) in_hole = true;
-      if (!in_hole) rects.emplace_back(xs[i], ys[j], xs[i + 1], ys[j + 1]);
+      const Eigen::Vector2d centre(0.5 * (xs[i] + xs[i + 1]), 0.5 * (ys[j] + ys[j + 1]));
+      if (inside_domain(dom, centre)) rects.emplace_back(xs[i], ys[j], xs[i + 1], ys[j + 1]);
     }
   return rects;
 }
 
 // The boundary segments and the (u, v) map onto pc.domain: cotangent weights,
 // then mean-value weights, each untangled when it folds.
+// Each arm's neck path spread by 3D arc length on the line its arm joins the
+// rectangle by (arms and domain arms are in the same order).
+void fix_neck_paths(const mesh::TriMesh& sheet, const Polycube2D& pc, Eigen::MatrixXd& uv, std::vector<char>& fixed) {
+  std::size_t next = 0;
+  for (const PolycubeLoop& L : pc.loops)
+    for (const LoopArm& arm : L.arms) {
+      const DomainArm& d = pc.domain.arms.at(next++);
+      const auto [start, dir] = side_line(pc.domain, d.side);
+      const Eigen::Vector2d a = start + d.from * dir, b = start + d.to * dir;
+      const std::vector<int>& path = arm.neck_path;
+      std::vector<double> s(path.size(), 0.0);
+      for (std::size_t i = 1; i < path.size(); ++i) s[i] = s[i - 1] + (P(sheet, path[i]) - P(sheet, path[i - 1])).norm();
+      for (std::size_t i = 0; i < path.size(); ++i) {
+        const double t = s.back() > 0.0 ? s[i] / s.back() : 0.0;
+        uv.row(path[i]) = ((1.0 - t) * a + t * b).transpose();
+        fixed[static_cast<std::size_t>(path[i])] = 1;
+      }
+    }
+}
+
 void map_to_domain(const mesh::TriMesh& sheet, Polycube2D& pc) {
   pc.segments = boundary_segments(pc.loops, pc.domain);
   std::vector<char> fixed;
-  const Eigen::MatrixXd buv = boundary_uv(sheet, pc.segments, fixed);
+  Eigen::MatrixXd buv = boundary_uv(sheet, pc.segments, fixed);
+  fix_neck_paths(sheet, pc, buv, fixed);
   for (UvWeights w : {UvWeights::Cotangent, UvWeights::MeanValue}) {
     pc.weights.clear();
     pc.uv = harmonic_uv(sheet, buv, fixed, w);
@@ -757,20 +1045,115 @@ void shrink_holes(RectilinearDomain& dom, double factor) {
   }
 }
 
+namespace {
+
+// Each arm's neck path: a shortest edge path between its neck's ends that
+// touches no other boundary vertex and no earlier neck. False when one has none.
+bool find_neck_paths(const mesh::TriMesh& sheet, std::vector<PolycubeLoop>& loops) {
+  const detail::EdgeGraph graph = detail::edge_graph(sheet);
+  std::vector<char> blocked(static_cast<std::size_t>(sheet.V.rows()), 0);
+  for (const PolycubeLoop& L : loops)
+    for (int v : L.vertices) blocked[static_cast<std::size_t>(v)] = 1;
+  for (PolycubeLoop& L : loops)
+    for (LoopArm& arm : L.arms) {
+      const int a = L.vertices[static_cast<std::size_t>(arm.corners[0])], b = L.vertices[static_cast<std::size_t>(arm.corners[3])];
+      const detail::ShortestPaths paths = detail::shortest_paths(graph, a, b, &blocked);
+      if (paths.prev[static_cast<std::size_t>(b)] < 0) return false;
+      arm.neck_path = detail::path_to(paths, b);
+      for (int v : arm.neck_path) blocked[static_cast<std::size_t>(v)] = 1;
+    }
+  return true;
+}
+
+// Splits every edge inside the sheet whose two ends are fixed (on a boundary
+// loop or a neck path) and that is no neck path's own edge: a triangle with
+// three fixed vertices could be flat (three vertices on one straight line of
+// the domain), and a convex-combination map is bijective only without such
+// chords. The loops and the paths keep their vertices. Returns the splits.
+int split_fixed_chords(mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops) {
+  int total = 0;
+  for (int pass = 0; pass < 8; ++pass) {
+    std::vector<char> fixed(static_cast<std::size_t>(m.V.rows()), 0);
+    std::unordered_set<std::uint64_t> path_edges;
+    for (const PolycubeLoop& L : loops) {
+      for (int v : L.vertices) fixed[static_cast<std::size_t>(v)] = 1;
+      for (const LoopArm& arm : L.arms) {
+        for (int v : arm.neck_path) fixed[static_cast<std::size_t>(v)] = 1;
+        for (std::size_t i = 1; i < arm.neck_path.size(); ++i) path_edges.insert(edge_key(arm.neck_path[i - 1], arm.neck_path[i]));
+      }
+    }
+    std::unordered_map<std::uint64_t, int> faces_of_edge;
+    for (int f = 0; f < m.F.rows(); ++f)
+      for (int k = 0; k < 3; ++k) ++faces_of_edge[edge_key(m.F(f, k), m.F(f, (k + 1) % 3))];
+    std::map<std::uint64_t, int> mid;
+    std::vector<Eigen::RowVector3d> newV;
+    std::vector<char> touched(static_cast<std::size_t>(m.F.rows()), 0);
+    for (int f = 0; f < m.F.rows(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        const int a = m.F(f, k), b = m.F(f, (k + 1) % 3);
+        const std::uint64_t key = edge_key(a, b);
+        if (!fixed[static_cast<std::size_t>(a)] || !fixed[static_cast<std::size_t>(b)] || faces_of_edge[key] != 2 ||
+            path_edges.count(key) || mid.count(key))
+          continue;
+        mid[key] = static_cast<int>(m.V.rows() + static_cast<Eigen::Index>(newV.size()));
+        newV.push_back(0.5 * (m.V.row(a) + m.V.row(b)));
+      }
+    if (newV.empty()) return total;
+    total += static_cast<int>(newV.size());
+    // Each face split by the midpoints on its edges (one, two or three).
+    std::vector<std::array<int, 3>> faces;
+    for (int f = 0; f < m.F.rows(); ++f) {
+      std::vector<int> poly;
+      for (int k = 0; k < 3; ++k) {
+        const int a = m.F(f, k), b = m.F(f, (k + 1) % 3);
+        poly.push_back(a);
+        const auto it = mid.find(edge_key(a, b));
+        if (it != mid.end()) poly.push_back(it->second);
+      }
+      if (poly.size() == 3) {
+        faces.push_back({poly[0], poly[1], poly[2]});
+        continue;
+      }
+      // A fan from a new (free) vertex keeps every triangle off the chords.
+      std::size_t c = 0;
+      while (poly[c] < m.V.rows()) ++c;
+      for (std::size_t i = 1; i + 1 < poly.size(); ++i)
+        faces.push_back({poly[c], poly[(c + i) % poly.size()], poly[(c + i + 1) % poly.size()]});
+    }
+    append_split(m, newV, faces);
+  }
+  return total;
+}
+
+}  // namespace
+
 Polycube2D polycube_2d(mesh::TriMesh& sheet, const std::vector<std::vector<int>>& loops,
-                       const std::vector<Eigen::Vector3d>& corner_points) {
+                       const std::vector<Eigen::Vector3d>& corner_points, bool arms) {
   Polycube2D pc;
   pc.frame = sheet_frame(sheet);
-  pc.loops = corner_points.empty() ? automatic_corners(sheet, loops, pc.frame)
+  pc.loops = corner_points.empty() ? automatic_corners(sheet, loops, pc.frame, arms)
                                    : corners_from_points(sheet, loops, corner_points, pc.frame);
+  for (const PolycubeLoop& L : pc.loops) pc.lobes += static_cast<int>(L.arms.size());
   refine_hole_corners(sheet, pc.loops);
-  pc.domain = rectilinear_domain(sheet, pc.loops);
-  // Harmonic maps onto a domain with holes may fold next to the hole corners;
-  // smaller holes (about their centres) leave the map more room.
-  for (int attempt = 0; attempt < 4; ++attempt) {
-    if (attempt > 0) shrink_holes(pc.domain, 0.8);
-    map_to_domain(sheet, pc);
-    if (pc.min_jacobian > 0.0 || pc.domain.holes.empty()) break;
+  if (pc.lobes > 0 && !find_neck_paths(sheet, pc.loops)) {
+    pc.loops = automatic_corners(sheet, loops, pc.frame, false);
+    pc.arms_dropped = true;
+  }
+  if (!pc.arms_dropped && pc.lobes > 0) split_fixed_chords(sheet, pc.loops);
+  for (;;) {
+    pc.domain = rectilinear_domain(sheet, pc.loops);
+    // Harmonic maps onto a domain with holes may fold next to the hole corners;
+    // smaller holes (about their centres) leave the map more room.
+    for (int attempt = 0; attempt < 4; ++attempt) {
+      if (attempt > 0) shrink_holes(pc.domain, 0.8);
+      map_to_domain(sheet, pc);
+      if (pc.min_jacobian > 0.0 || pc.domain.holes.empty()) break;
+    }
+    // The arms' reflex corners may fold the map where the rectangle alone does not.
+    if (pc.min_jacobian > 0.0 || pc.domain.arms.empty()) break;
+    // Corners chosen without the lobes' boundaries, as if there were none.
+    pc.loops = automatic_corners(sheet, loops, pc.frame, false);
+    pc.arms_dropped = true;
   }
   if (!(pc.min_jacobian > 0.0)) {
     int flipped = 0;

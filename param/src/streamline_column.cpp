@@ -39,14 +39,23 @@ StreamlineColumn trace_column(const FieldProbe& probe, const Eigen::Vector3d& st
     return check_failed(m.str());
   };
   int hint = start_hint ? *start_hint : -1;
-  // Unit descent direction at x; false outside H.
+  // Unit descent direction at x; false outside H. Where w was flattened
+  // around an interior extremum (w_field.h) its gradient is zero: the
+  // streamline crosses that plateau straight, in its last direction.
+  Eigen::Vector3d last = Eigen::Vector3d::Zero();
   auto direction = [&](const Eigen::Vector3d& x, Eigen::Vector3d* d) {
     Eigen::Vector3d g;
     if (!probe.gradient(x, &hint, &g)) return false;
     const double len = g.norm();
-    if (!(len > 0.0)) throw fail("the gradient of w vanishes at (" + std::to_string(x.x()) + ", " +
-                                 std::to_string(x.y()) + ", " + std::to_string(x.z()) + ")");
-    *d = -g / len;
+    if (len > 0.0) {
+      *d = -g / len;
+      return true;
+    }
+    if (last.norm() == 0.0)
+      throw bad_input("param: the streamline from (" + std::to_string(start.x()) + ", " + std::to_string(start.y()) + ", " +
+                      std::to_string(start.z()) + ") starts where the gradient of w vanishes (a flattened extremum of the "
+                      "discrete w); a finer tet mesh ('tetmesh.max_volume') or other cut loops ('midsurface.cut') can remove it");
+    *d = last;
     return true;
   };
   std::vector<Eigen::Vector3d> pts{start};
@@ -77,6 +86,7 @@ StreamlineColumn trace_column(const FieldProbe& probe, const Eigen::Vector3d& st
     if (inside) inside = direction(x + 0.5 * step * d2, &d3);
     if (inside) inside = direction(x + step * d3, &d4);
     next = inside ? Eigen::Vector3d(x + step / 6.0 * (d1 + 2.0 * d2 + 2.0 * d3 + d4)) : Eigen::Vector3d(x + step * d1);
+    if ((next - x).norm() > 0.0) last = (next - x).normalized();
     if (inside && probe.locate(next, &hint, nullptr) >= 0) {
       x = next;
       pts.push_back(x);

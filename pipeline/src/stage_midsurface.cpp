@@ -96,6 +96,14 @@ std::vector<std::string> midsurface_lines(const param::MidsurfaceResult& r) {
   const auto& pc = r.polycube;
   out.push_back(text("domain %.6g x %.6g with %zu holes, (u, v) weights: %s", pc.domain.width, pc.domain.height,
                      pc.domain.holes.size(), pc.weights.c_str()));
+  if (pc.arms_dropped)
+    out.push_back(text("lobes of the outer loop: %d; their arms were dropped (the (u, v) map with them folded)", pc.lobes));
+  else if (pc.lobes > 0)
+    out.push_back(text("lobes of the outer loop: %d, each an arm of the domain:", pc.lobes));
+  for (const auto& arm : pc.domain.arms) {
+    const Eigen::Vector4d b = param::arm_box(pc.domain, arm);
+    out.push_back(text("  arm on the %s side: [%.6g, %.6g] x [%.6g, %.6g]", param::to_string(arm.side), b(0), b(2), b(1), b(3)));
+  }
   for (std::size_t l = 0; l < pc.loops.size(); ++l) {
     std::string line = text("corners of loop %zu (%s):", l, pc.loops[l].outer ? "outer" : "hole");
     for (int k = 0; k < 4; ++k) {

@@ -770,7 +770,25 @@ TEST(TraceColumn, Failures) {
   const Eigen::VectorXd flat = Eigen::VectorXd::Constant(f.mesh.V.rows(), 0.3);
   const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(f.mesh.V.rows(), 3);
   const FieldProbe constant(f.mesh.V, f.mesh.T, f.topo, flat, zero);
-  EXPECT_EQ(kind(constant, Eigen::Vector3d(0.5, 0.5, 0.5), 0.01, 1000), ErrorKind::CheckFailed);  // no gradient
+  // No gradient where it starts (a flattened extremum): the mesh or the cut, exit 1.
+  EXPECT_EQ(kind(constant, Eigen::Vector3d(0.5, 0.5, 0.5), 0.01, 1000), ErrorKind::BadInput);
+}
+
+TEST(TraceColumn, CrossesAPlateauOfWInItsLastDirection) {
+  // w flattened in a slab (its gradient zero there, as around a flattened
+  // interior extremum): the streamline goes straight through and on to T1.
+  const LinearField f;
+  Eigen::MatrixXd grad = f.grad;
+  for (Eigen::Index v = 0; v < grad.rows(); ++v)
+    if (f.mesh.V(v, 0) > 0.35 && f.mesh.V(v, 0) < 0.65) grad.row(v).setZero();
+  const FieldProbe probe(f.mesh.V, f.mesh.T, f.topo, f.u, grad);
+  const Eigen::Vector3d start(0.9, 0.5, 0.9);
+  const StreamlineColumn col = trace_column(probe, start, 0.01, nullptr, 0.0, 10000);
+  const Eigen::Vector3d end = col.path.bottomRows(1).transpose();
+  EXPECT_LT(end.x(), 0.35);  // past the slab
+  EXPECT_LT(col.w(col.w.size() - 1), f.exact(start) - 0.3);
+  // On the box's boundary: some coordinate at 0 or 1 (to the bisection's tolerance).
+  EXPECT_LT(std::min({end.minCoeff(), 1.0 - end.maxCoeff()}), 1e-6);
 }
 
 // ---------------------------------------------------------------- base_layout

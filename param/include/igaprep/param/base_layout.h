@@ -21,7 +21,7 @@ struct CrestSegment {
   Eigen::Vector2d a, b;            // end points in (u, v)
 };
 
-// A straight side of the domain's boundary (outer rectangle or hole), with
+// A straight side of the domain's boundary (outer boundary or hole), with
 // the outward normal of the domain there: the direction M leaves through it.
 struct DomainEdge {
   Eigen::Vector2d a, b, outward;
@@ -35,10 +35,6 @@ struct BaseLayout {
   std::vector<CrestSegment> crests;
   std::vector<DomainEdge> domain_edges;
 };
-
-// Inputs: (u, v) point, domain. Output: whether it lies inside the domain
-// (in the outer rectangle and in no hole), boundary excluded.
-bool inside_domain(const RectilinearDomain& domain, const Eigen::Vector2d& p);
 
 // Inputs: the inset base surface; the largest aspect of the domain's grid
 // intervals (domain_rectangles; 0: the holes' grid as it is). Output: its layout.

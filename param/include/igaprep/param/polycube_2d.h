@@ -1,11 +1,12 @@
 #pragma once
 // The 2D polycube parameterization of M0trim (seed paper, section 4.2): four
 // corners on every boundary loop, an axis-aligned rectilinear domain (the
-// outer loop a W x H rectangle, every inner loop a rectangular hole), u and v
-// harmonic (cotangent Laplacian) with every boundary segment between two
-// corners iso-parametric in u or v, and the domain cut into rectangles by
-// extending the holes' sides. Each step is its own function; polycube_2d()
-// runs them in order.
+// outer loop a W x H rectangle with an arm out of it per lobe of the sheet,
+// every inner loop a rectangular hole), u and v harmonic (cotangent
+// Laplacian) with every boundary segment between two corners iso-parametric
+// in u or v, and the domain cut into rectangles by extending the holes' and
+// the arms' sides. Each step is its own function; polycube_2d() runs them in
+// order.
 #include <array>
 #include <string>
 #include <vector>
@@ -29,11 +30,29 @@ SheetFrame sheet_frame(const mesh::TriMesh& sheet);
 enum class DomainSide { Bottom = 0, Right = 1, Top = 2, Left = 3 };
 const char* to_string(DomainSide side);
 
+// A lobe of the outer loop as an arm of the domain: the positions in the
+// loop of its four corners in loop order (the neck's first end, the tip's two
+// corners, the neck's second end), all inside one segment, and the arm's
+// size in 3D: as long as the lobe reaches from its neck, as wide as its area
+// over that (at least the neck's width).
+struct LoopArm {
+  std::array<int, 4> corners{};
+  double width = 0.0, length = 0.0;
+  // The neck across the sheet: a shortest edge path from corners[0] to
+  // corners[3] through the sheet's interior, fixed on the line the arm
+  // joins the rectangle by, so that the rectangle and each arm are mapped
+  // each onto a convex domain (bijective). Set by polycube_2d.
+  std::vector<int> neck_path;
+};
+
 struct PolycubeLoop {
   std::vector<int> vertices;          // the boundary loop, oriented as the sheet's boundary (sheet on the left)
   bool outer = false;                 // the outer rectangle (else a hole)
   std::array<int, 4> corners{};       // positions in `vertices`, increasing
   std::array<DomainSide, 4> sides{};  // side of segment k, from corner k to corner k + 1 (cyclically)
+  // The outer loop's lobes (sheet_lobes.h), each an arm of the domain,
+  // ordered along the loop from corner 0.
+  std::vector<LoopArm> arms;
 };
 
 // Splits every interior edge whose two ends are boundary vertices (the inner
@@ -44,14 +63,17 @@ struct PolycubeLoop {
 // Returns the number of edges split.
 int split_boundary_ears(mesh::TriMesh& sheet);
 
-// Inputs: sheet, its boundary loops (analyze_sheet), frame. Output: one
-// PolycubeLoop per loop, the outer one being the loop of largest signed area
-// around frame.normal. Corners: for each loop, the vertices farthest along the
-// frame's four diagonal directions (+-e1 +-e2) from the loop's centroid; when
+// Inputs: sheet, its boundary loops (analyze_sheet), frame, whether the outer
+// loop's lobes get arms. Output: one PolycubeLoop per loop, the outer one
+// being the loop of largest signed area around frame.normal. Corners: for
+// each loop, the vertices farthest along the frame's four diagonal directions
+// (+-e1 +-e2) from the loop's centroid, a lobe's boundary left out; when
 // these are not four distinct corners in order with each segment at least 5 %
-// of the loop's length, four corners evenly spread by arc length instead.
+// of the loop's length, four corners evenly spread by arc length instead (and
+// no arms). An arm's tip corners split the lobe's boundary in the arm's
+// proportions: side, tip, side as length, width, length.
 std::vector<PolycubeLoop> automatic_corners(const mesh::TriMesh& sheet, const std::vector<std::vector<int>>& loops,
-                                            const SheetFrame& frame);
+                                            const SheetFrame& frame, bool arms = true);
 
 // Inputs: as above, and points: each snapped to the nearest boundary vertex;
 // every loop must receive exactly four. Throws bad_input naming the loop
@@ -59,21 +81,48 @@ std::vector<PolycubeLoop> automatic_corners(const mesh::TriMesh& sheet, const st
 std::vector<PolycubeLoop> corners_from_points(const mesh::TriMesh& sheet, const std::vector<std::vector<int>>& loops,
                                               const std::vector<Eigen::Vector3d>& points, const SheetFrame& frame);
 
-// A hole corner is a reflex (270 degree) corner of the domain: it needs at
-// least three triangles around it, or its fan cannot open without folding.
-// Splits the edges opposite the corner in its fan (interior edges only) until
-// every hole corner has at least min_fan triangles. Only interior vertices are
+// A hole corner, like an arm's neck, is a reflex (270 degree) corner of the
+// domain: it needs at least three triangles around it, or its fan cannot
+// open without folding. Splits the edges opposite the corner in its fan
+// (interior edges only) until every reflex corner has at least min_fan
+// triangles. Only interior vertices are
 // added (appended), so the loops stay valid. Returns the number of splits.
 int refine_hole_corners(mesh::TriMesh& sheet, const std::vector<PolycubeLoop>& loops, int min_fan = 4);
+
+// An arm of the domain: a rectangle on a side of the outer rectangle, out of it.
+struct DomainArm {
+  DomainSide side = DomainSide::Bottom;
+  // Along the side in the outer loop's direction (bottom: +u, right: +v,
+  // top: -u, left: -v), from the side's first corner; from < to.
+  double from = 0.0, to = 0.0;
+  double length = 0.0;  // out of the rectangle
+};
 
 struct RectilinearDomain {
   double width = 0.0, height = 0.0;   // the outer rectangle [0, width] x [0, height]
   std::vector<Eigen::Vector4d> holes;  // one per inner loop, in loop order: (umin, vmin, umax, vmax)
   std::vector<int> hole_loop;          // index into the loops of each hole
+  std::vector<DomainArm> arms;         // in the outer loop's order from its corner 0 (PolycubeLoop::arms)
 };
 
+// An arm as a box (umin, vmin, umax, vmax), and back (the arm on that side
+// of a domain whose outer rectangle is width x height).
+Eigen::Vector4d arm_box(const RectilinearDomain& domain, const DomainArm& arm);
+DomainArm arm_from_box(DomainSide side, const Eigen::Vector4d& box, double width, double height);
+
+// Inputs: (u, v) point, domain. Output: whether it lies inside the domain
+// (in the outer rectangle or an arm, and in no hole), boundary excluded.
+bool inside_domain(const RectilinearDomain& domain, const Eigen::Vector2d& p);
+
+// The corners of the outer boundary along one side of the outer rectangle in
+// the loop's direction: the side's first corner, each arm's four corners
+// (neck, tip, tip, neck), the side's last corner.
+std::vector<Eigen::Vector2d> side_walk(const RectilinearDomain& domain, DomainSide side);
+
 // Inputs: sheet, loops with corners. Output: the domain. W and H are the mean
-// 3D lengths of the outer loop's opposite segments; each hole gets the mean
+// 3D lengths of the outer loop's opposite segments (a lobe's boundary counted
+// as its arm's width); an arm has its LoopArm size (the width scaled as its
+// segment is onto its side); each hole gets the mean
 // lengths of its own opposite segments, centred where a harmonic map of the
 // sheet with the outer loop fixed on the rectangle and the holes free puts its
 // loop; holes are shrunk together until they keep a gap of 4 % of min(W, H)
@@ -113,9 +162,9 @@ int untangle_uv(const mesh::TriMesh& sheet, Eigen::MatrixXd& uv, const std::vect
 // Per triangle: signed (u, v) area / 3D area (> 0: positively oriented).
 Eigen::VectorXd uv_jacobians(const mesh::TriMesh& sheet, const Eigen::MatrixXd& uv);
 
-// The domain cut into rectangles by extending every hole side across the
-// whole domain: the cells of the grid of all hole sides and the outer sides
-// that lie outside the holes. Each (umin, vmin, umax, vmax). With
+// The domain cut into rectangles by extending every hole side and arm side
+// across the whole domain: the cells of the grid of all hole sides, arm sides
+// and the outer sides that lie inside the domain. Each (umin, vmin, umax, vmax). With
 // max_aspect > 0, every interval of that grid longer than max_aspect times
 // the longest interval across it is cut into equal parts (a long, narrow
 // domain, like a propeller's, gets blocks of a sensible shape).
@@ -131,14 +180,18 @@ struct Polycube2D {
   Eigen::VectorXd jacobian;              // per triangle (uv_jacobians)
   double min_jacobian = 0.0, max_jacobian = 0.0;
   std::string weights;                   // "cotangent" or "mean value" (fallback)
+  int lobes = 0;                         // lobes found on the outer loop
+  bool arms_dropped = false;             // they were found, but the map with their arms folded
 };
 
 // The whole step. Inputs: sheet (M0trim, after split_boundary_ears; refined in
-// place at hole corners, see refine_hole_corners), its boundary loops, corner
-// points (empty: automatic). Output: the parameterization; cotangent weights first and mean-value weights when some
-// triangle is not positively oriented. Throws bad_input when neither gives
-// a bijective map (the message suggests other corners or cut loops).
+// place at reflex corners, see refine_hole_corners), its boundary loops, corner
+// points (empty: automatic, with an arm per lobe when `arms`). Output: the
+// parameterization; cotangent weights first and mean-value weights when some
+// triangle is not positively oriented; without arms when the map with them
+// folds. Throws bad_input when nothing gives a bijective map (the message
+// suggests other corners or cut loops).
 Polycube2D polycube_2d(mesh::TriMesh& sheet, const std::vector<std::vector<int>>& loops,
-                       const std::vector<Eigen::Vector3d>& corner_points = {});
+                       const std::vector<Eigen::Vector3d>& corner_points = {}, bool arms = true);
 
 }  // namespace igaprep::param

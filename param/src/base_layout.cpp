@@ -35,7 +35,9 @@ BaseLayout base_layout(const InsetBase& base, double max_aspect) {
     const std::vector<Eigen::Vector2d> pts = side_walk(D, side);
     for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
       const Eigen::Vector2d d = (pts[i + 1] - pts[i]).normalized();
-      L.domain_edges.push_back({pts[i], pts[i + 1], Eigen::Vector2d(d.y(), -d.x())});
+      // Each edge from its lower to its upper end, as a box's sides run.
+      const bool forward = pts[i].x() + pts[i].y() <= pts[i + 1].x() + pts[i + 1].y();
+      L.domain_edges.push_back({forward ? pts[i] : pts[i + 1], forward ? pts[i + 1] : pts[i], Eigen::Vector2d(d.y(), -d.x())});
     }
   }
   for (const auto& h : D.holes)

@@ -121,6 +121,42 @@ void append_split(mesh::TriMesh& m, const std::vector<Eigen::RowVector3d>& newV,
     for (int k = 0; k < 3; ++k) m.F(static_cast<Eigen::Index>(f), k) = faces[f][k];
 }
 
+// The faces of m with each split by the midpoints on its edges (1, 2 or 3
+// of them; `mid`: edge key -> the midpoint's vertex index). Every new
+// triangle holds a midpoint, unless its face had none.
+std::vector<std::array<int, 3>> faces_split_at(const mesh::TriMesh& m, const std::map<std::uint64_t, int>& mid) {
+  std::vector<std::array<int, 3>> faces;
+  for (int f = 0; f < m.F.rows(); ++f) {
+    std::array<int, 3> v{m.F(f, 0), m.F(f, 1), m.F(f, 2)}, e{};
+    int count = 0;
+    for (int j = 0; j < 3; ++j) {
+      auto it = mid.find(edge_key(v[j], v[(j + 1) % 3]));
+      e[j] = it == mid.end() ? -1 : it->second;
+      count += e[j] >= 0;
+    }
+    if (count == 0) {
+      faces.push_back(v);
+    } else if (count == 3) {
+      faces.push_back({v[0], e[0], e[2]});
+      faces.push_back({e[0], v[1], e[1]});
+      faces.push_back({e[2], e[1], v[2]});
+      faces.push_back({e[0], e[1], e[2]});
+    } else if (count == 1) {
+      const int j = e[0] >= 0 ? 0 : (e[1] >= 0 ? 1 : 2);
+      faces.push_back({v[j], e[j], v[(j + 2) % 3]});
+      faces.push_back({e[j], v[(j + 1) % 3], v[(j + 2) % 3]});
+    } else {  // two: j is the edge without a midpoint
+      const int j = e[0] < 0 ? 0 : (e[1] < 0 ? 1 : 2);
+      const int a = v[j], b = v[(j + 1) % 3], c = v[(j + 2) % 3];
+      const int mbc = e[(j + 1) % 3], mca = e[(j + 2) % 3];
+      faces.push_back({a, b, mbc});
+      faces.push_back({a, mbc, mca});
+      faces.push_back({mca, mbc, c});
+    }
+  }
+  return faces;
+}
+
 }  // namespace
 
 const char* to_string(DomainSide side) {
@@ -194,20 +230,7 @@ int split_boundary_ears(mesh::TriMesh& m) {
     }
     if (newV.empty()) return total;
     total += static_cast<int>(newV.size());
-    std::vector<std::array<int, 3>> faces;
-    for (int f = 0; f < m.F.rows(); ++f) {
-      bool split = false;
-      for (int k = 0; k < 3 && !split; ++k) {
-        const int a = m.F(f, k), b = m.F(f, (k + 1) % 3), c = m.F(f, (k + 2) % 3);
-        auto it = mid.find(edge_key(a, b));
-        if (it == mid.end()) continue;
-        faces.push_back({a, it->second, c});
-        faces.push_back({it->second, b, c});
-        split = true;
-      }
-      if (!split) faces.push_back({m.F(f, 0), m.F(f, 1), m.F(f, 2)});
-    }
-    append_split(m, newV, faces);
+    append_split(m, newV, faces_split_at(m, mid));  // one midpoint per face at most (touched)
   }
   return total;
 }
@@ -437,37 +460,7 @@ int refine_hole_corners(mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops
     }
     if (newV.empty()) return total;
     total += static_cast<int>(newV.size());
-    // Split every face by the midpoints on its edges (1, 2 or 3 of them).
-    std::vector<std::array<int, 3>> faces;
-    for (int f = 0; f < m.F.rows(); ++f) {
-      std::array<int, 3> v{m.F(f, 0), m.F(f, 1), m.F(f, 2)}, e{};
-      int count = 0;
-      for (int j = 0; j < 3; ++j) {
-        auto it = mid.find(edge_key(v[j], v[(j + 1) % 3]));
-        e[j] = it == mid.end() ? -1 : it->second;
-        count += e[j] >= 0;
-      }
-      if (count == 0) {
-        faces.push_back(v);
-      } else if (count == 3) {
-        faces.push_back({v[0], e[0], e[2]});
-        faces.push_back({e[0], v[1], e[1]});
-        faces.push_back({e[2], e[1], v[2]});
-        faces.push_back({e[0], e[1], e[2]});
-      } else if (count == 1) {
-        const int j = e[0] >= 0 ? 0 : (e[1] >= 0 ? 1 : 2);
-        faces.push_back({v[j], e[j], v[(j + 2) % 3]});
-        faces.push_back({e[j], v[(j + 1) % 3], v[(j + 2) % 3]});
-      } else {  // two: j is the edge without a midpoint
-        const int j = e[0] < 0 ? 0 : (e[1] < 0 ? 1 : 2);
-        const int a = v[j], b = v[(j + 1) % 3], c = v[(j + 2) % 3];
-        const int mbc = e[(j + 1) % 3], mca = e[(j + 2) % 3];
-        faces.push_back({a, b, mbc});
-        faces.push_back({a, mbc, mca});
-        faces.push_back({mca, mbc, c});
-      }
-    }
-    append_split(m, newV, faces);
+    append_split(m, newV, faces_split_at(m, mid));
   }
   return total;
 }
@@ -1100,7 +1093,9 @@ int split_fixed_chords(mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops)
       }
     if (newV.empty()) return total;
     total += static_cast<int>(newV.size());
-    // Each face split by the midpoints on its edges (one, two or three).
+    // A fan from a new (free) vertex per split face, rather than
+    // faces_split_at's pattern: the arms' figures in docs/validation.md were
+    // measured with it.
     std::vector<std::array<int, 3>> faces;
     for (int f = 0; f < m.F.rows(); ++f) {
       std::vector<int> poly;
@@ -1110,13 +1105,9 @@ int split_fixed_chords(mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops)
         const auto it = mid.find(edge_key(a, b));
         if (it != mid.end()) poly.push_back(it->second);
       }
-      if (poly.size() == 3) {
-        faces.push_back({poly[0], poly[1], poly[2]});
-        continue;
-      }
-      // A fan from a new (free) vertex keeps every triangle off the chords.
       std::size_t c = 0;
-      while (poly[c] < m.V.rows()) ++c;
+      while (c < poly.size() && poly[c] < m.V.rows()) ++c;
+      if (c == poly.size()) c = 0;  // no midpoint: the face as it is
       for (std::size_t i = 1; i + 1 < poly.size(); ++i)
         faces.push_back({poly[c], poly[(c + i) % poly.size()], poly[(c + i + 1) % poly.size()]});
     }
@@ -1135,10 +1126,12 @@ Polycube2D polycube_2d(mesh::TriMesh& sheet, const std::vector<std::vector<int>>
                                    : corners_from_points(sheet, loops, corner_points, pc.frame);
   for (const PolycubeLoop& L : pc.loops) pc.lobes += static_cast<int>(L.arms.size());
   refine_hole_corners(sheet, pc.loops);
-  if (pc.lobes > 0 && !find_neck_paths(sheet, pc.loops)) {
+  // Without their arms, the corners are chosen again as if there were no lobes.
+  auto drop_arms = [&] {
     pc.loops = automatic_corners(sheet, loops, pc.frame, false);
     pc.arms_dropped = true;
-  }
+  };
+  if (pc.lobes > 0 && !find_neck_paths(sheet, pc.loops)) drop_arms();
   if (!pc.arms_dropped && pc.lobes > 0) split_fixed_chords(sheet, pc.loops);
   for (;;) {
     pc.domain = rectilinear_domain(sheet, pc.loops);
@@ -1151,9 +1144,7 @@ Polycube2D polycube_2d(mesh::TriMesh& sheet, const std::vector<std::vector<int>>
     }
     // The arms' reflex corners may fold the map where the rectangle alone does not.
     if (pc.min_jacobian > 0.0 || pc.domain.arms.empty()) break;
-    // Corners chosen without the lobes' boundaries, as if there were none.
-    pc.loops = automatic_corners(sheet, loops, pc.frame, false);
-    pc.arms_dropped = true;
+    drop_arms();
   }
   if (!(pc.min_jacobian > 0.0)) {
     int flipped = 0;

@@ -29,12 +29,9 @@ struct LobeSearch {
   std::vector<int> stamp;         // flood-fill marks, by epoch
   int epoch = 0;
 
-  double arc(int a, int b) const {
-    const double total = s.back();
-    return std::fmod(s[static_cast<std::size_t>(sample[static_cast<std::size_t>(b)])] -
-                         s[static_cast<std::size_t>(sample[static_cast<std::size_t>(a)])] + total,
-                     total);
-  }
+  // Arc length along the loop at sample k, and forward from sample a to b.
+  double at(int k) const { return s[static_cast<std::size_t>(sample[static_cast<std::size_t>(k)])]; }
+  double arc(int a, int b) const { return std::fmod(at(b) - at(a) + s.back(), s.back()); }
   int vertex(int k) const { return loop[static_cast<std::size_t>(sample[static_cast<std::size_t>(k)])]; }
 
   // The loop's vertex nearest to arc length x from its start (any x: taken round the loop).
@@ -49,9 +46,7 @@ struct LobeSearch {
 
   // Distance between the boundary points one neck width outside a neck's ends.
   double beyond(int a, int b, double neck) const {
-    return (point_at(s[static_cast<std::size_t>(sample[static_cast<std::size_t>(a)])] - neck) -
-            point_at(s[static_cast<std::size_t>(sample[static_cast<std::size_t>(b)])] + neck))
-        .norm();
+    return (point_at(at(a) - neck) - point_at(at(b) + neck)).norm();
   }
 
   // Area of the part that the shortest path between the two samples cuts off
@@ -97,8 +92,7 @@ struct LobeSearch {
 bool overlaps(const LobeSearch& q, const NeckCandidate& x, const NeckCandidate& y) {
   // Loop positions covered by each arc, as intervals on the unrolled loop.
   const double total = q.s.back();
-  auto start = [&](const NeckCandidate& c) { return q.s[static_cast<std::size_t>(q.sample[static_cast<std::size_t>(c.a)])]; };
-  const double xa = start(x), ya = start(y);
+  const double xa = q.at(x.a), ya = q.at(y.a);
   for (const double shift : {-total, 0.0, total}) {
     const double lo = ya + shift, hi = ya + shift + y.arc;
     if (xa <= hi && lo <= xa + x.arc) return true;
@@ -108,8 +102,7 @@ bool overlaps(const LobeSearch& q, const NeckCandidate& x, const NeckCandidate& 
 
 bool contains(const LobeSearch& q, const NeckCandidate& outer, const NeckCandidate& inner) {
   const double total = q.s.back();
-  auto start = [&](const NeckCandidate& c) { return q.s[static_cast<std::size_t>(q.sample[static_cast<std::size_t>(c.a)])]; };
-  const double offset = std::fmod(start(inner) - start(outer) + total, total);
+  const double offset = std::fmod(q.at(inner.a) - q.at(outer.a) + total, total);
   return offset + inner.arc <= outer.arc && inner.arc < outer.arc;
 }
 

@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <cstddef>
 #include <iterator>
 #include <list>
 #include <utility>
+
+#include <Eigen/LU>
 
 #include "igaprep/core/error.h"
 
@@ -203,6 +206,76 @@ std::vector<Eigen::Vector2d> spread_columns(const std::function<Eigen::Vector3d(
   return out;
 }
 
+// Whether moving inner point q of the grid to x keeps its four cells unfolded.
+bool keeps_cells(std::vector<Eigen::Vector2d>& g, std::size_t m, std::size_t q, const Eigen::Vector2d& x) {
+  const Eigen::Vector2d was = g[q];
+  g[q] = x;
+  const std::size_t i = q % m, j = q / m;
+  const bool ok = positive_cell(g, m, i - 1, j - 1) && positive_cell(g, m, i, j - 1) && positive_cell(g, m, i - 1, j) &&
+                  positive_cell(g, m, i, j);
+  g[q] = was;
+  return ok;
+}
+
+// Moves the inner parameters so that their ends approach the mean of their
+// four neighbours' ends (on T1: a discrete harmonic grid of the face's
+// footprint), each step mapped back through the end map's local Jacobian
+// (least squares over the four neighbours) and at most half the way to the
+// nearest neighbour; a step that would fold one of the point's cells is
+// not made. The sides stay. Spreading rows and columns one by one leaves
+// the ends even along each but not across: torus_genus3's shells folded on
+// T1 where the fans turn.
+void smooth_ends(const std::function<Eigen::Vector3d(const Eigen::Vector2d&)>& end, std::vector<Eigen::Vector2d>& g,
+                 std::size_t m, int rounds) {
+  if (rounds <= 0) return;
+  std::vector<Eigen::Vector3d> e(m * m);
+  for (std::size_t q = 0; q < m * m; ++q) e[q] = end(g[q]);
+  for (int round = 0; round < rounds; ++round) {
+    std::vector<Eigen::Vector2d> next = g;
+    std::vector<Eigen::Vector3d> next_e = e;
+    double largest = 0.0;
+    for (std::size_t j = 1; j + 1 < m; ++j)
+      for (std::size_t i = 1; i + 1 < m; ++i) {
+        const std::size_t q = i + m * j;
+        Eigen::Matrix<double, 3, 2> EP = Eigen::Matrix<double, 3, 2>::Zero();
+        Eigen::Matrix2d PP = Eigen::Matrix2d::Zero();
+        Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+        double nearest = std::numeric_limits<double>::infinity();
+        for (std::size_t n : {q - 1, q + 1, q - m, q + m}) {
+          const Eigen::Vector2d dp = g[n] - g[q];
+          EP += (e[n] - e[q]) * dp.transpose();
+          PP += dp * dp.transpose();
+          mean += 0.25 * e[n];
+          nearest = std::min(nearest, dp.norm());
+        }
+        if (!(std::abs(PP.determinant()) > 0.0)) continue;
+        const Eigen::Matrix<double, 3, 2> A = EP * PP.inverse();  // the end map's Jacobian, least squares
+        const Eigen::Matrix2d AA = A.transpose() * A;
+        if (!(std::abs(AA.determinant()) > 0.0)) continue;
+        const Eigen::Vector3d to_mean = mean - e[q];
+        Eigen::Vector2d step = 0.5 * (AA.inverse() * (A.transpose() * to_mean));
+        if (step.norm() > 0.5 * nearest) step *= 0.5 * nearest / step.norm();
+        // Half way to the mean, kept only if the end comes nearer it and not
+        // past it (damped Jacobi steps): across a wide parameter gap (a fan's
+        // first cell) the Jacobian is far off, and steps taken on trust
+        // overshot and diverged. Halved twice at most.
+        for (int halving = 0; halving < 3; ++halving, step *= 0.5) {
+          const Eigen::Vector2d x = g[q] + step;
+          if (!x.allFinite() || !keeps_cells(next, m, q, x)) continue;
+          const Eigen::Vector3d ex = end(x);
+          if (!((ex - mean).norm() < to_mean.norm() && (ex - e[q]).dot(to_mean) <= to_mean.squaredNorm())) continue;
+          next[q] = x;
+          next_e[q] = ex;
+          largest = std::max(largest, step.norm());
+          break;
+        }
+      }
+    g = std::move(next);
+    e = std::move(next_e);
+    if (!(largest > 1e-4 / static_cast<double>(m))) return;  // settled (parameters run from 0 to 1)
+  }
+}
+
 }  // namespace
 
 ParamCell param_cell(const std::vector<double>& params, double x) {
@@ -243,13 +316,20 @@ std::vector<Eigen::Vector2d> spread_face_params(const std::function<Eigen::Vecto
   // where folded; else the rows alone (trapezoids) with the spread sides
   // (the neighbouring faces share them), untangled; last, relaxed
   // throughout.
-  if (untangle(out, m, 100)) return out;
-  std::vector<Eigen::Vector2d> rows_only = rows;
-  for (std::size_t k = 0; k < m; ++k)
-    for (std::size_t side : {m * k, m - 1 + m * k, k, k + m * (m - 1)}) rows_only[side] = out[side];
-  if (untangle(rows_only, m, 100)) return rows_only;
-  const std::vector<char> inside(m * m, 1);
-  for (int sweep = 0; sweep < 2000 && !untangle(out, m, 0); ++sweep) relax(out, m, inside);
+  if (!untangle(out, m, 100)) {
+    std::vector<Eigen::Vector2d> rows_only = rows;
+    for (std::size_t k = 0; k < m; ++k)
+      for (std::size_t side : {m * k, m - 1 + m * k, k, k + m * (m - 1)}) rows_only[side] = out[side];
+    if (untangle(rows_only, m, 100)) {
+      out = std::move(rows_only);
+    } else {
+      const std::vector<char> inside(m * m, 1);
+      for (int sweep = 0; sweep < 2000 && !untangle(out, m, 0); ++sweep) relax(out, m, inside);
+    }
+  }
+  bool spread = false;
+  for (std::size_t q = 0; q < m * m; ++q) spread = spread || out[q] != Eigen::Vector2d(params[q % m], params[q / m]);
+  if (spread) smooth_ends(end, out, m, options.end_smoothing);
   return out;
 }
 

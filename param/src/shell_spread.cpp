@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <array>
-#include <limits>
+#include <cmath>
 #include <cstddef>
 #include <iterator>
+#include <limits>
 #include <list>
 #include <utility>
 
@@ -117,6 +118,13 @@ bool positive_cell(const std::vector<Eigen::Vector2d>& g, std::size_t m, std::si
   return true;
 }
 
+bool any_folded(const std::vector<Eigen::Vector2d>& g, std::size_t m) {
+  for (std::size_t j = 0; j + 1 < m; ++j)
+    for (std::size_t i = 0; i + 1 < m; ++i)
+      if (!positive_cell(g, m, i, j)) return true;
+  return false;
+}
+
 // Marks the corners of the folded cells free; returns whether any cell
 // was folded.
 bool free_folded_points(const std::vector<Eigen::Vector2d>& g, std::size_t m, std::vector<char>& free) {
@@ -145,9 +153,8 @@ void relax(std::vector<Eigen::Vector2d>& g, std::size_t m, const std::vector<cha
 
 // Relaxes the corners of the folded cells, a little at a time, until none
 // is folded or `rounds` rounds have passed; the rest of the grid keeps its
-// spread (a fan's samples crowd into a small part of the face, and each
-// sweep of a wider smoothing undid some of it: the propeller lost 1.2 % of
-// its volume). Returns whether the grid is free of folds.
+// spread (a fan's samples crowd into a small part of the face, and a wider
+// smoothing undoes that). Returns whether the grid is free of folds.
 bool untangle(std::vector<Eigen::Vector2d>& g, std::size_t m, int rounds) {
   std::vector<char> free(m * m);
   for (int round = 0; round < rounds; ++round) {
@@ -155,8 +162,7 @@ bool untangle(std::vector<Eigen::Vector2d>& g, std::size_t m, int rounds) {
     if (!free_folded_points(g, m, free)) return true;
     relax(g, m, free);
   }
-  std::fill(free.begin(), free.end(), 0);
-  return !free_folded_points(g, m, free);
+  return !any_folded(g, m);
 }
 
 // The rows spread one by one, each along s at its own t (fold-free: every
@@ -324,7 +330,7 @@ std::vector<Eigen::Vector2d> spread_face_params(const std::function<Eigen::Vecto
       out = std::move(rows_only);
     } else {
       const std::vector<char> inside(m * m, 1);
-      for (int sweep = 0; sweep < 2000 && !untangle(out, m, 0); ++sweep) relax(out, m, inside);
+      for (int sweep = 0; sweep < 2000 && any_folded(out, m); ++sweep) relax(out, m, inside);
     }
   }
   bool spread = false;

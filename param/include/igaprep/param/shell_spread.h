@@ -29,9 +29,8 @@ struct SpreadOptions {
   double chord_deviation = 0.0;
   // Rounds of moving a spread face's inner parameters towards ends that are
   // each the mean of their neighbours' (0: off). Spreading rows and columns
-  // one by one makes the ends even along each, not across: a fan's ends
-  // still folded on T1 (torus_genus3: 465 folded sample cells without the
-  // rounds, 141 with 10, 139 with 20; a fan in a unit test needs 20).
+  // one by one makes the ends even along each, not across, and a fan's ends
+  // can still fold on T1 (docs/decomposition.md, "Spread columns").
   int end_smoothing = 20;
   int refinements = 12;  // halvings of a parameter interval, at most
   int per_gap = 4;       // the curve of ends is refined to this many chords per even gap

@@ -11,6 +11,10 @@ namespace igaprep::param {
 double StreamlineColumn::arc_at_level(double level) const {
   const Eigen::Index k = w.size();
   if (level >= w(0)) return 0.0;
+  // T1 is where the column ends. w is 0 before that inside a tet whose four
+  // vertices lie on T1 (a sliver TetGen leaves against a concave part of
+  // T1), and the first point at w = 0 would lie up to a tet inside.
+  if (level <= 0.0) return arc(k - 1);
   for (Eigen::Index j = 0; j + 1 < k; ++j) {
     if (w(j + 1) <= level) {
       const double dw = w(j) - w(j + 1);

@@ -791,6 +791,25 @@ TEST(TraceColumn, CrossesAPlateauOfWInItsLastDirection) {
   EXPECT_LT(std::min({end.minCoeff(), 1.0 - end.maxCoeff()}), 1e-6);
 }
 
+TEST(TraceColumn, TheLevelOfT1IsWhereTheColumnEnds) {
+  // w = 0 on a band of vertices before T1, as inside the slivers TetGen
+  // leaves against a concave part of T1 (all four vertices on T1): the
+  // level 0 is still the column's end on T1, not the band's near side.
+  LinearField f;
+  for (Eigen::Index v = 0; v < f.u.size(); ++v) f.u(v) = std::max(f.u(v) - 0.5, 0.0);
+  f.grad = vertex_gradients(f.mesh.V, f.mesh.T, f.u);
+  const FieldProbe probe(f.mesh.V, f.mesh.T, f.topo, f.u, f.grad);
+  const StreamlineColumn col = trace_column(probe, Eigen::Vector3d(0.62, 0.41, 0.77), 0.01, nullptr, 0.0, 10000);
+  const Eigen::Index k = col.path.rows();
+  Eigen::Index first_zero = 0;
+  while (first_zero < k && col.w(first_zero) > 0.0) ++first_zero;
+  ASSERT_LT(first_zero + 5, k);  // the band is several steps wide
+  EXPECT_EQ(col.arc_at_level(0.0), col.arc(k - 1));
+  const Eigen::Vector3d end = col.at_level(0.0);
+  EXPECT_LT(std::min(end.minCoeff(), 1.0 - end.maxCoeff()), 1e-6);  // on the box's boundary
+  EXPECT_LT(col.arc_at_level(0.1), col.arc(first_zero));  // other levels as before
+}
+
 // ---------------------------------------------------------------- base_layout
 
 TEST(BaseLayout, OneHoleDomain) {

@@ -18,7 +18,8 @@ struct StreamlineColumn {
   Eigen::VectorXd arc;   // k: arc length from the start
 
   // Arc length where w first reaches level (linear along the path); 0 for
-  // level >= w(0), the whole length for level <= w(end).
+  // level >= w(0), the whole length for level <= w(end) and for level 0
+  // (T1, where the column ends).
   double arc_at_level(double level) const;
   // The point at arc length s (clamped to the path).
   Eigen::Vector3d at_arc(double s) const;

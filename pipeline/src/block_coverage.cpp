@@ -1,7 +1,9 @@
 #include "block_coverage.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "igaprep/core/text.h"
 #include "igaprep/iga_check/fidelity.h"
@@ -91,6 +93,18 @@ void add_volume_findings(const param::VolumeParam& vp, const std::vector<mesh::T
   }
 }
 
+// Per vertex of t1, its distance to the nearest block side labelled T1
+// (sides: t1_sides(vp), not empty).
+std::vector<double> distances_to_sides(const mesh::TriMesh& sides, const mesh::TriMesh& t1) {
+  const param::SurfaceProjector projector(sides.V, sides.F);
+  std::vector<double> distance(static_cast<std::size_t>(t1.V.rows()));
+  for (Eigen::Index v = 0; v < t1.V.rows(); ++v) {
+    const Eigen::Vector3d x = t1.V.row(v).transpose();
+    distance[static_cast<std::size_t>(v)] = (projector.closest(x) - x).norm();
+  }
+  return distance;
+}
+
 void add_t1_findings(const param::VolumeParam& vp, const mesh::TriMesh& t1, const std::string& name, double limit,
                      std::vector<std::string>& out) {
   const mesh::TriMesh sides = t1_sides(vp);
@@ -99,12 +113,7 @@ void add_t1_findings(const param::VolumeParam& vp, const mesh::TriMesh& t1, cons
     return;
   }
   const double diagonal = iga_check::mesh_diagonal(t1);
-  const param::SurfaceProjector projector(sides.V, sides.F);
-  std::vector<double> distance(static_cast<std::size_t>(t1.V.rows()));
-  for (Eigen::Index v = 0; v < t1.V.rows(); ++v) {
-    const Eigen::Vector3d x = t1.V.row(v).transpose();
-    distance[static_cast<std::size_t>(v)] = (projector.closest(x) - x).norm();
-  }
+  const std::vector<double> distance = distances_to_sides(sides, t1);
   const auto regions = iga_check::uncovered_regions(t1, distance, limit * diagonal);
   for (std::size_t i = 0; i < regions.size() && i < kMaxRegions; ++i)
     out.push_back(text("blocks leave '%s' uncovered: %d vertices around %s, the farthest %.3f %% of the diagonal away "
@@ -116,6 +125,13 @@ void add_t1_findings(const param::VolumeParam& vp, const mesh::TriMesh& t1, cons
 }
 
 }  // namespace
+
+double t1_sample_gap(const param::VolumeParam& vp, const mesh::TriMesh& t1) {
+  const mesh::TriMesh sides = t1_sides(vp);
+  if (sides.F.rows() == 0) return std::numeric_limits<double>::infinity();
+  const std::vector<double> distance = distances_to_sides(sides, t1);
+  return *std::max_element(distance.begin(), distance.end()) / iga_check::mesh_diagonal(t1);
+}
 
 std::vector<std::string> block_coverage_findings(const param::VolumeParam& vp, const Surfaces& surfaces,
                                                  const iga_check::CheckOptions& limits) {

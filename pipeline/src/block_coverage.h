@@ -14,6 +14,11 @@
 
 namespace igaprep::pipeline {
 
+// The largest distance from a vertex of t1 to the block sides labelled T1
+// (their sample grids cut into triangles), over t1's diagonal; infinity
+// when no side lies on T1.
+double t1_sample_gap(const param::VolumeParam& vp, const mesh::TriMesh& t1);
+
 // One line per finding (empty when the blocks cover the input).
 std::vector<std::string> block_coverage_findings(const param::VolumeParam& vp, const Surfaces& surfaces,
                                                  const iga_check::CheckOptions& limits);

@@ -95,7 +95,7 @@ param::MidsurfaceOptions read_midsurface_section(const json& section, const std:
 }
 
 void read_decomposition_section(const json& section, const std::string& file, param::BaseSurfaceOptions& base,
-                                param::VolumeParamOptions& volume) {
+                                param::VolumeParamOptions& volume, bool& auto_spread_deviation) {
   ObjectReader r(section, "decomposition", file);
   base.inset = r.number_in("inset", base.inset, 0.05, 0.95);
   base.smoothing = r.integer("smoothing", base.smoothing, 0, 100);
@@ -109,7 +109,16 @@ void read_decomposition_section(const json& section, const std::string& file, pa
   volume.crest_reach = r.number_in("crest_reach", volume.crest_reach, 0.1, 2.0);
   volume.blend = r.number_in("blend", volume.blend, 0.01, 4.0);
   volume.surface_degree = r.integer("surface_degree", volume.surface_degree, 0, 12);
-  volume.spread_deviation = r.number_in("spread_deviation", volume.spread_deviation, 0.0, 0.1);
+  const json* spread = r.find("spread_deviation");
+  if (spread && spread->is_string()) {
+    if (spread->get<std::string>() != "auto")
+      r.fail("'decomposition.spread_deviation' must be \"auto\" or a number in [0, 0.1], got \"" +
+             spread->get<std::string>() + "\"");
+    auto_spread_deviation = true;
+  } else if (spread) {
+    volume.spread_deviation = r.number_in("spread_deviation", volume.spread_deviation, 0.0, 0.1);
+    auto_spread_deviation = false;
+  }
   r.refuse_unknown();
 }
 

@@ -4,7 +4,8 @@
 //   "midsurface": {"cut": "auto" | {"plane": {"point", "normal"}} | {"loops": [[i, ...], ...]},
 //                  "corners": [[x, y, z], ...], "path_lengths": true}
 //   "decomposition": {"strategy": 2, "theta": 1.1, "w0": 0.75 (absent: midway), "inset": 0.3, "smoothing": 5,
-//                     "sliding_uv": true, "max_aspect": 2, "blend": 1.0, "crest_reach": 1.0, "surface_degree": 6}
+//                     "sliding_uv": true, "max_aspect": 2, "blend": 1.0, "crest_reach": 1.0, "surface_degree": 6,
+//                     "spread_deviation": "auto" | number}
 //   "fit": {"degree": 3, "elements": 6, "oversample": 2,
 //           "jacobian_target": 0.35, "jacobian_iterations": 200, "jacobian_sweeps": 40,
 //           "jacobian_points": 5}
@@ -19,7 +20,7 @@ namespace igaprep::pipeline {
 param::MidsurfaceOptions read_midsurface_section(const nlohmann::json& section, const std::string& file);
 // The decomposition section holds the base surface's keys and the volume's.
 void read_decomposition_section(const nlohmann::json& section, const std::string& file, param::BaseSurfaceOptions& base,
-                                param::VolumeParamOptions& volume);
+                                param::VolumeParamOptions& volume, bool& auto_spread_deviation);
 void read_fit_section(const nlohmann::json& section, const std::string& file, spline::BlockFitOptions& fit,
                       spline::SurfaceFitOptions& surface, spline::JacobianOptimizationOptions& jacobian);
 

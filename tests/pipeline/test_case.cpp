@@ -89,6 +89,9 @@ TEST(Case, BadKeysAreRefusedByName) {
       {R"(, "decomposition": {"sliding_uv": "yes"})", "'decomposition.sliding_uv' must be true or false"},
       {R"(, "decomposition": {"max_aspect": 0.5})", "'decomposition.max_aspect' must be 0 (no cuts) or at least 1"},
       {R"(, "decomposition": {"max_aspect": -1})", "decomposition.max_aspect"},
+      {R"(, "decomposition": {"spread_deviation": "always"})",
+       "'decomposition.spread_deviation' must be \"auto\" or a number in [0, 0.1], got \"always\""},
+      {R"(, "decomposition": {"spread_deviation": 0.2})", "decomposition.spread_deviation"},
       {R"(, "fit": {"elements": 0})", "fit.elements"},
       {R"(, "fit": {"degree": 2.5})", "fit.degree"},
       {R"(, "fit": {"knots": 3})", "unknown key 'fit.knots'"},
@@ -171,6 +174,8 @@ TEST(Case, ValuesAreReadAndPathsResolved) {
   EXPECT_EQ(c.base.smoothing, 5);  // the one default for M's smoothing
   EXPECT_EQ(c.base.max_aspect, 3.0);
   EXPECT_EQ(c.volume.strategy, 1);
+  EXPECT_TRUE(c.auto_spread_deviation);  // absent: "auto"
+  EXPECT_EQ(c.volume.spread_deviation, 0.0);
   EXPECT_EQ(c.fit.elements, 4);
   EXPECT_EQ(c.jacobian.target, 0.0);
   EXPECT_EQ(c.surface_fit.iterations, 3);
@@ -181,6 +186,13 @@ TEST(Case, ValuesAreReadAndPathsResolved) {
   EXPECT_EQ(c.validation.patches, 0);
   EXPECT_EQ(c.load_case->solver, igaprep::iga_check::LinearSolver::Amg);
   EXPECT_EQ(c.materials.at(1).young_modulus, 100.0);
+  const Case given = parse_case(sphere2_case(R"(, "decomposition": {"spread_deviation": 0.002})"),
+                                models_dir() + "/sphere2", "case.json");
+  EXPECT_FALSE(given.auto_spread_deviation);
+  EXPECT_EQ(given.volume.spread_deviation, 0.002);
+  const Case named = parse_case(sphere2_case(R"(, "decomposition": {"spread_deviation": "auto"})"),
+                                models_dir() + "/sphere2", "case.json");
+  EXPECT_TRUE(named.auto_spread_deviation);
   // Defaults: the study's direct solver, the load case's choice by size.
   const Case d = parse_case(sphere2_case(R"(, "load_case": {"fix": "outer"})"), models_dir() + "/sphere2", "case.json");
   EXPECT_EQ(d.validation.solver, igaprep::iga_check::LinearSolver::Cholesky);
@@ -227,6 +239,13 @@ TEST(Case, AllOptionsJsonReadsBack) {
   const Case back = parse_case(text, models_dir() + "/sphere2", "back.json");
   EXPECT_EQ(igaprep::pipeline::case_json(back, models_dir() + "/sphere2", true), text);
   EXPECT_EQ(back.volume.theta, 0.9);
+  EXPECT_TRUE(back.auto_spread_deviation);
+  const Case given = parse_case(sphere2_case(R"(, "decomposition": {"spread_deviation": 0.003})"),
+                                models_dir() + "/sphere2", "case.json");
+  const Case given_back =
+      parse_case(igaprep::pipeline::case_json(given, models_dir() + "/sphere2", true), models_dir() + "/sphere2", "back.json");
+  EXPECT_FALSE(given_back.auto_spread_deviation);
+  EXPECT_EQ(given_back.volume.spread_deviation, 0.003);
   ASSERT_TRUE(back.tspline);
   EXPECT_EQ(back.tspline->relative_tolerance, 0.002);
   EXPECT_EQ(back.tspline->rounds, 2);

@@ -57,9 +57,9 @@ struct VolumeParamOptions {
   // end from the middle of a gap lies farther than this fraction of the
   // diagonal from the cubic through the nearest ends (a part of T1 bulging
   // out between two samples, shell_spread.h); 0 (default): only where the
-  // gaps are uneven. Off by default: on the kitten 1e-3 took the fidelity
-  // from 4.2 % to 1.7 % but left 5 negative elements after the repair
-  // (docs/decomposition.md, "Bulges between samples").
+  // gaps are uneven. Not on everywhere: on the built-in models it lowers the
+  // validation rate (docs/decomposition.md, "Bulges between samples"); the
+  // pipeline sets it where the samples miss T1.
   double spread_deviation = 0.0;
   double ray_step = 2e-3;     // ray march step, fraction of H's bounding-box diagonal
   double stream_step = 1e-3;  // streamline step (Runge-Kutta 4), fraction of the diagonal

@@ -104,6 +104,10 @@ struct Case {
   param::MidsurfaceOptions midsurface;  // section "midsurface" (docs/midsurface.md)
   param::BaseSurfaceOptions base;       // section "decomposition": inset, smoothing, sliding_uv
   param::VolumeParamOptions volume;     // section "decomposition" (docs/decomposition.md)
+  // "decomposition.spread_deviation": "auto" (default): volume.spread_deviation
+  // is 0 unless the blocks' samples miss T1 by more than check.fidelity_limit
+  // (the param stage then runs again with a share of that limit).
+  bool auto_spread_deviation = true;
   spline::BlockFitOptions fit;          // section "fit"
   spline::SurfaceFitOptions surface_fit;         // section "fit", keys surface_* (iterations 0: off)
   spline::JacobianOptimizationOptions jacobian;  // section "fit", keys jacobian_*

@@ -17,9 +17,11 @@ FieldProbe::FieldProbe(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, const
 
 int FieldProbe::locate(const Eigen::Vector3d& p, int* hint, Eigen::Vector4d* bary) const {
   // A hinted query is a short step from a known tet: a walk that leaves the
-  // mesh means p is outside. A fresh one may leave a non-convex mesh: scan.
+  // mesh means p is outside. A fresh one asks the grid (a walk from afar
+  // may leave a non-convex mesh), then scans.
   const bool fresh = !(hint && *hint >= 0 && *hint < T_.rows());
-  const int c = locate_in_tets(V_, T_, topo_, p, fresh ? -1 : *hint, bary, fresh);
+  int c = fresh ? grid_->locate(p, bary) : -1;
+  if (c < 0) c = locate_in_tets(V_, T_, topo_, p, fresh ? -1 : *hint, bary, fresh);
   if (c >= 0 && hint) *hint = c;
   return c;
 }

@@ -1,10 +1,12 @@
 #include "shell_columns.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <iterator>
 
 #include "igaprep/core/error.h"
+#include "igaprep/core/parallel.h"
 #include "igaprep/param/shell_spread.h"
 
 namespace igaprep::param {
@@ -28,37 +30,49 @@ double smoothstep(double h) { return h * h * (3.0 - 2.0 * h); }
 
 }  // namespace
 
-ShellColumns::ShellColumns(const FieldProbe& probe, double step, int* hint, const std::vector<double>& params,
+ShellColumns::ShellColumns(const FieldProbe& probe, double step, const std::vector<double>& params,
                            const std::vector<Eigen::Vector3d>& face, const std::function<bool(int)>& traced,
                            const std::array<bool, 4>& fixed_sides, bool spread, const std::vector<double>& depths,
                            const SpreadOptions& spread_options)
-    : probe_(probe), step_(step), hint_(hint), params_(params), face_(face), depths_(depths) {
+    : probe_(probe), step_(step), params_(params), face_(face), depths_(depths) {
   const int m = static_cast<int>(params.size());
   grid_.resize(face.size());
   std::vector<Eigen::Vector2d> grid(face.size());
-  for (int q = 0; q < m * m; ++q) {
+  for (int q = 0; q < m * m; ++q)
     grid[static_cast<std::size_t>(q)] = {params[static_cast<std::size_t>(q % m)], params[static_cast<std::size_t>(q / m)]};
-    if (traced(q)) grid_[static_cast<std::size_t>(q)] = trace_from(grid[static_cast<std::size_t>(q)]);
-  }
+  std::vector<int> count(face.size(), 0);
+  parallel_for(face.size(), [&](std::size_t q) {
+    if (traced(static_cast<int>(q))) grid_[q] = trace_from(grid[q], count[q]);
+  });
+  for (int c : count) streamlines_ += c;
   if (!spread) return;
   std::vector<Eigen::Vector3d> ends(face.size());
   for (int q = 0; q < m * m; ++q) {
     if (!traced(q)) throw internal_error("shell columns: a face is spread only when every sample is traced");
     ends[static_cast<std::size_t>(q)] = last_point(grid_[static_cast<std::size_t>(q)]);
   }
-  std::vector<Eigen::Vector2d> moved =
-      spread_face_params([&](const Eigen::Vector2d& p) { return last_point(trace_from(p)); }, params, ends,
-                         fixed_sides, spread_options);
+  std::atomic<int> spread_traces{0};
+  std::vector<Eigen::Vector2d> moved = spread_face_params(
+      [&](const Eigen::Vector2d& p) {
+        int n = 0;
+        const Eigen::Vector3d e = last_point(trace_from(p, n));
+        spread_traces += n;
+        return e;
+      },
+      params, ends, fixed_sides, spread_options);
+  streamlines_ += spread_traces;
   if (moved == grid) return;
   moved_ = std::move(moved);
   trace_spread_columns(traced);
 }
 
-StreamlineColumn ShellColumns::trace_from(const Eigen::Vector2d& p) {
+StreamlineColumn ShellColumns::trace_from(const Eigen::Vector2d& p, int& traces) const {
   // Between the face's samples the bilinear face can leave H where H is
   // curved and thin (a hub's wall): the start moves halfway to the nearest
   // grid point, up to 4 times, then onto it (a function of p alone, so the
-  // faces that share an edge still agree).
+  // faces that share an edge still agree). Each trace starts without a hint
+  // (the grid finds its tet), so that it depends on p alone, whichever
+  // thread runs it.
   auto nearest = [&](double x) {
     const auto it = std::lower_bound(params_.begin(), params_.end(), x);
     if (it == params_.begin()) return params_.front();
@@ -68,12 +82,12 @@ StreamlineColumn ShellColumns::trace_from(const Eigen::Vector2d& p) {
   const Eigen::Vector2d grid(nearest(p.x()), nearest(p.y()));
   Eigen::Vector2d at = p;
   for (int attempt = 0;; ++attempt) {
-    ++streamlines_;
+    ++traces;
     try {
-      return trace_column(probe_, face_point(face_, params_, attempt < 5 ? at : grid), step_, hint_);
+      int hint = -1;
+      return trace_column(probe_, face_point(face_, params_, attempt < 5 ? at : grid), step_, &hint);
     } catch (const Error& e) {
       if (e.kind() == ErrorKind::Internal || attempt == 5) throw;
-      if (hint_) *hint_ = -1;  // the failed walk left it anywhere
       at = 0.5 * (at + grid);
     }
   }
@@ -82,15 +96,17 @@ StreamlineColumn ShellColumns::trace_from(const Eigen::Vector2d& p) {
 void ShellColumns::trace_spread_columns(const std::function<bool(int)>& traced) {
   const int m = static_cast<int>(params_.size());
   depth_.resize(face_.size());
-  for (int q = 0; q < m * m; ++q) {
-    const Eigen::Vector2d p(params_[static_cast<std::size_t>(q % m)], params_[static_cast<std::size_t>(q / m)]);
-    const Eigen::Vector2d d = moved_[static_cast<std::size_t>(q)] - p;
-    if (!traced(q) || d.isZero(0.0)) continue;
-    auto& cols = depth_[static_cast<std::size_t>(q)];
+  std::vector<int> count(face_.size(), 0);
+  parallel_for(face_.size(), [&](std::size_t q) {
+    const Eigen::Vector2d p(params_[q % static_cast<std::size_t>(m)], params_[q / static_cast<std::size_t>(m)]);
+    const Eigen::Vector2d d = moved_[q] - p;
+    if (!traced(static_cast<int>(q)) || d.isZero(0.0)) return;
+    auto& cols = depth_[q];
     cols.resize(depths_.size());
     for (std::size_t k = 0; k < depths_.size(); ++k)
-      if (depths_[k] > 0.0) cols[k] = trace_from(p + smoothstep(depths_[k]) * d);
-  }
+      if (depths_[k] > 0.0) cols[k] = trace_from(p + smoothstep(depths_[k]) * d, count[q]);
+  });
+  for (int c : count) streamlines_ += c;
 }
 
 const StreamlineColumn& ShellColumns::at(int q, double h) const {

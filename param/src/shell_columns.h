@@ -24,7 +24,8 @@ class ShellColumns {
   // whether sample q is traced (a ruled face: its long edges only);
   // fixed_sides: sides (bottom j = 0, right, top, left) not to spread;
   // spread: try spreading at all (strategy 2, not a ruled face), with `spread_options`.
-  ShellColumns(const FieldProbe& probe, double step, int* hint, const std::vector<double>& params,
+  // The streamlines are traced on all cores; each depends on its start alone.
+  ShellColumns(const FieldProbe& probe, double step, const std::vector<double>& params,
                const std::vector<Eigen::Vector3d>& face, const std::function<bool(int)>& traced,
                const std::array<bool, 4>& fixed_sides, bool spread, const std::vector<double>& depths,
                const SpreadOptions& spread_options = {});
@@ -35,12 +36,12 @@ class ShellColumns {
   bool spread() const { return !moved_.empty(); }
 
  private:
-  StreamlineColumn trace_from(const Eigen::Vector2d& p);
+  // The streamline from the face at p; `traces` counts the attempts.
+  StreamlineColumn trace_from(const Eigen::Vector2d& p, int& traces) const;
   void trace_spread_columns(const std::function<bool(int)>& traced);
 
   const FieldProbe& probe_;
   const double step_;
-  int* hint_;
   const std::vector<double>& params_;
   const std::vector<Eigen::Vector3d>& face_;
   const std::vector<double> depths_;

@@ -12,6 +12,7 @@
 #include <Eigen/LU>
 
 #include "igaprep/core/error.h"
+#include "igaprep/core/parallel.h"
 
 namespace igaprep::param {
 namespace {
@@ -174,7 +175,7 @@ std::vector<Eigen::Vector2d> spread_rows(const std::function<Eigen::Vector3d(con
   const std::size_t m = params.size();
   std::vector<Eigen::Vector2d> rows(m * m);
   row_ends.resize(m * m);
-  for (std::size_t j = 0; j < m; ++j) {
+  parallel_for(m, [&](std::size_t j) {
     const double t = params[j];
     std::vector<Eigen::Vector3d> e(ends.begin() + static_cast<std::ptrdiff_t>(m * j),
                                    ends.begin() + static_cast<std::ptrdiff_t>(m * (j + 1)));
@@ -185,7 +186,7 @@ std::vector<Eigen::Vector2d> spread_rows(const std::function<Eigen::Vector3d(con
       rows[i + m * j] = Eigen::Vector2d(s[i], t);
       row_ends[i + m * j] = s[i] == params[i] ? e[i] : end(rows[i + m * j]);
     }
-  }
+  });
   return rows;
 }
 
@@ -197,7 +198,7 @@ std::vector<Eigen::Vector2d> spread_columns(const std::function<Eigen::Vector3d(
                                             const std::array<bool, 4>& fixed_sides, const SpreadOptions& options) {
   const std::size_t m = params.size();
   std::vector<Eigen::Vector2d> out(m * m);
-  for (std::size_t i = 0; i < m; ++i) {
+  parallel_for(m, [&](std::size_t i) {
     auto at = [&](double u) {
       const ParamCell c = param_cell(params, u);
       return Eigen::Vector2d((1.0 - c.w) * rows[i + m * c.i] + c.w * rows[i + m * (c.i + 1)]);
@@ -208,7 +209,7 @@ std::vector<Eigen::Vector2d> spread_columns(const std::function<Eigen::Vector3d(
     const std::vector<double> u =
         fixed ? params : even_end_params([&](double x) { return end(at(x)); }, params, e, options);
     for (std::size_t j = 0; j < m; ++j) out[i + m * j] = u == params ? rows[i + m * j] : at(u[j]);
-  }
+  });
   return out;
 }
 
@@ -231,48 +232,77 @@ bool keeps_cells(std::vector<Eigen::Vector2d>& g, std::size_t m, std::size_t q, 
 // not made. The sides stay. Spreading rows and columns one by one leaves
 // the ends even along each but not across: torus_genus3's shells folded on
 // T1 where the fans turn.
+// The step of inner point q towards the mean of its neighbours' ends, from
+// the round's grid g and ends e (zero where the end map's local Jacobian
+// is singular); *mean receives that mean.
+Eigen::Vector2d step_to_mean(const std::vector<Eigen::Vector2d>& g, const std::vector<Eigen::Vector3d>& e, std::size_t m,
+                             std::size_t q, Eigen::Vector3d* mean) {
+  Eigen::Matrix<double, 3, 2> EP = Eigen::Matrix<double, 3, 2>::Zero();
+  Eigen::Matrix2d PP = Eigen::Matrix2d::Zero();
+  *mean = Eigen::Vector3d::Zero();
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t n : {q - 1, q + 1, q - m, q + m}) {
+    const Eigen::Vector2d dp = g[n] - g[q];
+    EP += (e[n] - e[q]) * dp.transpose();
+    PP += dp * dp.transpose();
+    *mean += 0.25 * e[n];
+    nearest = std::min(nearest, dp.norm());
+  }
+  if (!(std::abs(PP.determinant()) > 0.0)) return Eigen::Vector2d::Zero();
+  const Eigen::Matrix<double, 3, 2> A = EP * PP.inverse();  // the end map's Jacobian, least squares
+  const Eigen::Matrix2d AA = A.transpose() * A;
+  if (!(std::abs(AA.determinant()) > 0.0)) return Eigen::Vector2d::Zero();
+  Eigen::Vector2d step = 0.5 * (AA.inverse() * (A.transpose() * (*mean - e[q])));
+  if (step.norm() > 0.5 * nearest) step *= 0.5 * nearest / step.norm();
+  return step;
+}
+
+// Moves the inner parameters so that their ends approach the mean of their
+// four neighbours' ends (on T1: a discrete harmonic grid of the face's
+// footprint), each step mapped back through the end map's local Jacobian
+// (least squares over the four neighbours) and at most half the way to the
+// nearest neighbour; a step that would fold one of the point's cells is
+// not made. The sides stay. Spreading rows and columns one by one leaves
+// the ends even along each but not across: torus_genus3's shells folded on
+// T1 where the fans turn.
 void smooth_ends(const std::function<Eigen::Vector3d(const Eigen::Vector2d&)>& end, std::vector<Eigen::Vector2d>& g,
                  std::size_t m, int rounds) {
   if (rounds <= 0) return;
   std::vector<Eigen::Vector3d> e(m * m);
-  for (std::size_t q = 0; q < m * m; ++q) e[q] = end(g[q]);
+  parallel_for(m * m, [&](std::size_t q) { e[q] = end(g[q]); });
+  std::vector<Eigen::Vector2d> step(m * m);
+  std::vector<Eigen::Vector3d> mean(m * m), first_end(m * m);
   for (int round = 0; round < rounds; ++round) {
+    // Every point's first step depends on the round's grid alone: their
+    // ends are traced on all cores, the steps then taken in order.
+    for (std::size_t j = 1; j + 1 < m; ++j)
+      for (std::size_t i = 1; i + 1 < m; ++i) step[i + m * j] = step_to_mean(g, e, m, i + m * j, &mean[i + m * j]);
+    parallel_for(m * m, [&](std::size_t q) {
+      const std::size_t i = q % m, j = q / m;
+      if (i == 0 || j == 0 || i + 1 == m || j + 1 == m || step[q].isZero(0.0) || !step[q].allFinite()) return;
+      first_end[q] = end(g[q] + step[q]);
+    });
     std::vector<Eigen::Vector2d> next = g;
     std::vector<Eigen::Vector3d> next_e = e;
     double largest = 0.0;
     for (std::size_t j = 1; j + 1 < m; ++j)
       for (std::size_t i = 1; i + 1 < m; ++i) {
         const std::size_t q = i + m * j;
-        Eigen::Matrix<double, 3, 2> EP = Eigen::Matrix<double, 3, 2>::Zero();
-        Eigen::Matrix2d PP = Eigen::Matrix2d::Zero();
-        Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-        double nearest = std::numeric_limits<double>::infinity();
-        for (std::size_t n : {q - 1, q + 1, q - m, q + m}) {
-          const Eigen::Vector2d dp = g[n] - g[q];
-          EP += (e[n] - e[q]) * dp.transpose();
-          PP += dp * dp.transpose();
-          mean += 0.25 * e[n];
-          nearest = std::min(nearest, dp.norm());
-        }
-        if (!(std::abs(PP.determinant()) > 0.0)) continue;
-        const Eigen::Matrix<double, 3, 2> A = EP * PP.inverse();  // the end map's Jacobian, least squares
-        const Eigen::Matrix2d AA = A.transpose() * A;
-        if (!(std::abs(AA.determinant()) > 0.0)) continue;
-        const Eigen::Vector3d to_mean = mean - e[q];
-        Eigen::Vector2d step = 0.5 * (AA.inverse() * (A.transpose() * to_mean));
-        if (step.norm() > 0.5 * nearest) step *= 0.5 * nearest / step.norm();
+        if (step[q].isZero(0.0)) continue;
+        const Eigen::Vector3d to_mean = mean[q] - e[q];
         // Half way to the mean, kept only if the end comes nearer it and not
         // past it (damped Jacobi steps): across a wide parameter gap (a fan's
         // first cell) the Jacobian is far off, and steps taken on trust
         // overshot and diverged. Halved twice at most.
-        for (int halving = 0; halving < 3; ++halving, step *= 0.5) {
-          const Eigen::Vector2d x = g[q] + step;
+        Eigen::Vector2d s = step[q];
+        for (int halving = 0; halving < 3; ++halving, s *= 0.5) {
+          const Eigen::Vector2d x = g[q] + s;
           if (!x.allFinite() || !keeps_cells(next, m, q, x)) continue;
-          const Eigen::Vector3d ex = end(x);
-          if (!((ex - mean).norm() < to_mean.norm() && (ex - e[q]).dot(to_mean) <= to_mean.squaredNorm())) continue;
+          const Eigen::Vector3d ex = halving == 0 ? first_end[q] : end(x);
+          if (!((ex - mean[q]).norm() < to_mean.norm() && (ex - e[q]).dot(to_mean) <= to_mean.squaredNorm())) continue;
           next[q] = x;
           next_e[q] = ex;
-          largest = std::max(largest, step.norm());
+          largest = std::max(largest, s.norm());
           break;
         }
       }

@@ -466,7 +466,7 @@ ShellColumns face_columns(VolumeContext& ctx, const ShellBase& face) {
   const int m = ctx.m;
   SpreadOptions spread;
   spread.chord_deviation = ctx.options.spread_deviation * ctx.diag;
-  return ShellColumns(ctx.probe, ctx.options.stream_step * ctx.diag, &ctx.hint, ctx.params, face.start,
+  return ShellColumns(ctx.probe, ctx.options.stream_step * ctx.diag, ctx.params, face.start,
                       [&](int q) { return traced(face, m, q); }, face.fixed_sides,
                       !ctx.strategy1 && !face.collapsed && !face.ruled, depths, spread);
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "igaprep/core/parallel.h"
 #include "igaprep/param/shell_spread.h"
 
 namespace {
@@ -128,15 +129,24 @@ TEST(SpreadFaceParams, RowsAreSpreadAndEdgesDependOnTheirEndsOnly) {
 // folded (the end map turns within a cell). Neither grid is folded now,
 // the sides are still those of their ends alone, and every row of ends is
 // even (largest gap over the mean 1.3; the grid's own middle row 3.9).
+Eigen::Vector3d moving_fan(const Eigen::Vector2d& x) {
+  return Eigen::Vector3d(std::pow(x.x(), 1.0 + 8.0 * x.y()), std::pow(x.y(), 1.0 + 8.0 * (1.0 - x.x())), 0.0);
+}
+
+// The ends of `end` at the grid p x p, first index fastest.
+template <class End>
+std::vector<Eigen::Vector3d> grid_ends(const End& end, const std::vector<double>& p) {
+  std::vector<Eigen::Vector3d> ends;
+  for (double t : p)
+    for (double s : p) ends.push_back(end({s, t}));
+  return ends;
+}
+
 TEST(SpreadFaceParams, AFanWhoseFocusMovesAcrossTheFaceLeavesNoCellFolded) {
   const int m = 9;
   const std::vector<double> p = uniform(m);
-  auto end = [](const Eigen::Vector2d& x) {
-    return Eigen::Vector3d(std::pow(x.x(), 1.0 + 8.0 * x.y()), std::pow(x.y(), 1.0 + 8.0 * (1.0 - x.x())), 0.0);
-  };
-  std::vector<Eigen::Vector3d> ends;
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < m; ++i) ends.push_back(end({p[static_cast<std::size_t>(i)], p[static_cast<std::size_t>(j)]}));
+  const auto end = moving_fan;
+  const std::vector<Eigen::Vector3d> ends = grid_ends(end, p);
   const std::vector<Eigen::Vector2d> q = spread_face_params(end, p, ends);
   EXPECT_EQ(folded_cells(q, m), 0);
   std::vector<Eigen::Vector2d> ends_2d;
@@ -160,5 +170,21 @@ TEST(SpreadFaceParams, AFanWhoseFocusMovesAcrossTheFaceLeavesNoCellFolded) {
     const double spread = gap_ratio([&](int i) { return q[static_cast<std::size_t>(i + m * j)]; });
     EXPECT_LT(spread, 0.4 * grid) << "row " << j << ": " << spread << ", the grid's middle row " << grid;
   }
+}
+
+// The face's ends are traced on all cores; the result is the same on one
+// (the moved parameters bit for bit), whatever order the threads run in.
+TEST(SpreadFaceParams, TheSameOnOneCoreAsOnAll) {
+  const int m = 9;
+  const std::vector<double> p = uniform(m);
+  const auto end = moving_fan;
+  const std::vector<Eigen::Vector3d> ends = grid_ends(end, p);
+  igaprep::set_thread_count(1);
+  const std::vector<Eigen::Vector2d> one = spread_face_params(end, p, ends);
+  igaprep::set_thread_count(0);
+  const std::vector<Eigen::Vector2d> all = spread_face_params(end, p, ends);
+  ASSERT_EQ(one.size(), all.size());
+  for (std::size_t q = 0; q < one.size(); ++q) EXPECT_EQ(one[q], all[q]) << q;
+  EXPECT_NE(one[static_cast<std::size_t>(m + 1)], Eigen::Vector2d(p[1], p[1]));  // the face was spread
 }
 }  // namespace

@@ -24,7 +24,8 @@ class FieldProbe {
   FieldProbe(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, const TetTopology& topology,
              const Eigen::VectorXd& u, const Eigen::MatrixXd& vertex_gradient);
 
-  // The tet holding p (locate_in_tets): a walk from *hint, with a scan when
+  // The tet holding p: without a hint (null or -1) a look-up in a grid of
+  // the tets, else a walk from *hint (locate_in_tets), with a scan when
   // it cycles, or when it leaves the mesh and no hint was given; -1 when a
   // walk from a hint leaves the mesh through its boundary (the steps of rays
   // and streamlines are short) or no tet holds p. *hint receives the tet found; *bary its barycentric coordinates.

@@ -64,21 +64,20 @@ void offer_blocks_mesh(const param::VolumeParam& vp, double diag, Observer& obse
 }
 
 // The share of the check's fidelity limit a bulge of T1 between two samples
-// may reach when the param stage spreads the faces a second time: 0.4 took
-// the kitten's and torus_genus3's samples from 4.5 and 0.85 % to 1.1 and
-// 0.53 % of the diagonal off T1 (docs/validation.md).
+// may reach when the param stage spreads the faces a second time, so that
+// the fit has room left within the limit.
 constexpr double kBulgeShareOfFidelityLimit = 0.4;
 // The spread samples are kept only if they come this much nearer T1: where
-// the samples miss a whole part of it (the hand's fingers: 12.3 -> 12.1 %)
-// spreading cannot bring it back, and its denser fans cost the fit (22 ->
-// 27 negative elements after the repair, which took twice as long).
+// the samples miss a whole part of it (the hand's fingers) spreading cannot
+// bring it back, and its denser fans cost the fit (docs/decomposition.md,
+// "Bulges between samples").
 constexpr double kKeptBelowShareOfGap = 0.75;
 
 // "spread_deviation": "auto". Where the blocks' sides labelled T1 miss T1
 // by more than the fidelity limit, the fit cannot reach it: vp is built
 // again with the shell faces spread where T1 bulges between samples, and
-// kept if its sides come markedly nearer T1. Returns a line for the stage's summary
-// (empty when nothing was done).
+// kept if its sides come markedly nearer T1. Returns a line for the stage's
+// summary (empty when nothing was done).
 std::string spread_bulges_if_needed(const Case& c, const Decomposition& d, const std::vector<double>& params,
                                     param::VolumeParamOptions options, const mesh::TriMesh& t1,
                                     param::VolumeParam& vp) {

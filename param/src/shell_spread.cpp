@@ -272,15 +272,22 @@ void smooth_ends(const std::function<Eigen::Vector3d(const Eigen::Vector2d&)>& e
   parallel_for(m * m, [&](std::size_t q) { e[q] = end(g[q]); });
   std::vector<Eigen::Vector2d> step(m * m);
   std::vector<Eigen::Vector3d> mean(m * m), first_end(m * m);
+  std::vector<char> traced(m * m);
   for (int round = 0; round < rounds; ++round) {
     // Every point's first step depends on the round's grid alone: their
     // ends are traced on all cores, the steps then taken in order.
+    // (Only those that keep their cells unfolded on the round's grid; a
+    // step that keeps them only after its neighbours' moves is traced then.)
+    std::fill(traced.begin(), traced.end(), 0);
     for (std::size_t j = 1; j + 1 < m; ++j)
-      for (std::size_t i = 1; i + 1 < m; ++i) step[i + m * j] = step_to_mean(g, e, m, i + m * j, &mean[i + m * j]);
+      for (std::size_t i = 1; i + 1 < m; ++i) {
+        const std::size_t q = i + m * j;
+        step[q] = step_to_mean(g, e, m, q, &mean[q]);
+        const Eigen::Vector2d x = g[q] + step[q];
+        traced[q] = !step[q].isZero(0.0) && x.allFinite() && keeps_cells(g, m, q, x);
+      }
     parallel_for(m * m, [&](std::size_t q) {
-      const std::size_t i = q % m, j = q / m;
-      if (i == 0 || j == 0 || i + 1 == m || j + 1 == m || step[q].isZero(0.0) || !step[q].allFinite()) return;
-      first_end[q] = end(g[q] + step[q]);
+      if (traced[q]) first_end[q] = end(g[q] + step[q]);
     });
     std::vector<Eigen::Vector2d> next = g;
     std::vector<Eigen::Vector3d> next_e = e;
@@ -298,7 +305,7 @@ void smooth_ends(const std::function<Eigen::Vector3d(const Eigen::Vector2d&)>& e
         for (int halving = 0; halving < 3; ++halving, s *= 0.5) {
           const Eigen::Vector2d x = g[q] + s;
           if (!x.allFinite() || !keeps_cells(next, m, q, x)) continue;
-          const Eigen::Vector3d ex = halving == 0 ? first_end[q] : end(x);
+          const Eigen::Vector3d ex = halving == 0 && traced[q] ? first_end[q] : end(x);
           if (!((ex - mean[q]).norm() < to_mean.norm() && (ex - e[q]).dot(to_mean) <= to_mean.squaredNorm())) continue;
           next[q] = x;
           next_e[q] = ex;

@@ -224,14 +224,6 @@ bool keeps_cells(std::vector<Eigen::Vector2d>& g, std::size_t m, std::size_t q, 
   return ok;
 }
 
-// Moves the inner parameters so that their ends approach the mean of their
-// four neighbours' ends (on T1: a discrete harmonic grid of the face's
-// footprint), each step mapped back through the end map's local Jacobian
-// (least squares over the four neighbours) and at most half the way to the
-// nearest neighbour; a step that would fold one of the point's cells is
-// not made. The sides stay. Spreading rows and columns one by one leaves
-// the ends even along each but not across: torus_genus3's shells folded on
-// T1 where the fans turn.
 // The step of inner point q towards the mean of its neighbours' ends, from
 // the round's grid g and ends e (zero where the end map's local Jacobian
 // is singular); *mean receives that mean.

@@ -18,18 +18,25 @@
 
 namespace {
 
-TEST(LostParts, TheParamStageNamesTheHandsFingers) {
-  const std::string obj = std::string(IGAPREP_SHARED_MODELS_DIR) + "/hand.obj";
-  if (!std::filesystem::exists(obj)) GTEST_SKIP() << "shared model " << obj << " is absent";
+// A run of a shared model (one material, every key at its default, no
+// validation) up to the param stage; rec holds the stages' summaries.
+igaprep::param::VolumeParam run_to_param(const std::string& surface, const std::string& name,
+                                         pipeline_test::Recorder& rec) {
   const igaprep::pipeline::Case c = igaprep::pipeline::parse_case(
-      R"({"surfaces": [")" + obj + R"("], "validation": {"enabled": false}})", pipeline_test::scratch_dir("hand"),
-      "hand/case.json");
-  pipeline_test::Recorder rec;
+      R"({"surfaces": [")" + surface + R"("], "validation": {"enabled": false}})", pipeline_test::scratch_dir(name),
+      name + "/case.json");
   const igaprep::pipeline::Surfaces s = igaprep::pipeline::load_surfaces(c);
   const auto mid = igaprep::pipeline::midsurface_stage(c, s, rec);
   const auto base = igaprep::pipeline::base_stage(c, mid, rec);
   const auto d = igaprep::pipeline::decompose_stage(c, s, base, rec);
-  igaprep::pipeline::param_stage(c, s, d, rec);
+  return igaprep::pipeline::param_stage(c, s, d, rec);
+}
+
+TEST(LostParts, TheParamStageNamesTheHandsFingers) {
+  const std::string obj = std::string(IGAPREP_SHARED_MODELS_DIR) + "/hand.obj";
+  if (!std::filesystem::exists(obj)) GTEST_SKIP() << "shared model " << obj << " is absent";
+  pipeline_test::Recorder rec;
+  run_to_param(obj, "hand", rec);
   ASSERT_EQ(rec.stages.back().stage, "param");
   const std::vector<std::string>& lines = rec.stages.back().details;
 
@@ -66,15 +73,8 @@ TEST(LostParts, TheParamStageNamesTheHandsFingers) {
 TEST(LostParts, TheParamStageSpreadsTheFacesWhereT1BulgesBetweenSamples) {
   const std::string off = std::string(IGAPREP_SHARED_MODELS_DIR) + "/torus_genus3.off";
   if (!std::filesystem::exists(off)) GTEST_SKIP() << "shared model " << off << " is absent";
-  const igaprep::pipeline::Case c = igaprep::pipeline::parse_case(
-      R"({"surfaces": [")" + off + R"("], "validation": {"enabled": false}})", pipeline_test::scratch_dir("torus_genus3"),
-      "torus_genus3/case.json");
   pipeline_test::Recorder rec;
-  const igaprep::pipeline::Surfaces s = igaprep::pipeline::load_surfaces(c);
-  const auto mid = igaprep::pipeline::midsurface_stage(c, s, rec);
-  const auto base = igaprep::pipeline::base_stage(c, mid, rec);
-  const auto d = igaprep::pipeline::decompose_stage(c, s, base, rec);
-  const igaprep::param::VolumeParam vp = igaprep::pipeline::param_stage(c, s, d, rec);
+  const igaprep::param::VolumeParam vp = run_to_param(off, "torus_genus3", rec);
   ASSERT_EQ(rec.stages.back().stage, "param");
   // 2026-12-06: 0.845 % before, 0.531 % after (the samples' grids cut into
   // triangles; the fit follows T1 between them more closely: 1.232 ->

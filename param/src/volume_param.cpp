@@ -15,6 +15,7 @@
 #include "igaprep/param/inset_base.h"
 #include "igaprep/param/sheet_sampler.h"
 #include "igaprep/param/streamline_column.h"
+#include "igaprep/param/surface_grid_relax.h"
 #include "igaprep/param/surface_projector.h"
 #include "igaprep/param/tet_topology.h"
 #include "shell_columns.h"
@@ -496,6 +497,29 @@ Eigen::MatrixXd layer_samples(const VolumeContext& ctx, const ShellBase& face, c
   return s;
 }
 
+// A spread face's layer-1 block: its side on T1 (k = 0) relaxed on T1
+// (surface_grid_relax.h), the move carried into the block along each
+// column, whole on T1 and fading to none at the layer's inner side (a
+// smoothstep in the depth parameter), so that every other side keeps its
+// samples. Counts the side's folded cells on T1 before and after in out.
+void relax_t1_side(const VolumeContext& ctx, Eigen::MatrixXd& s, const SurfaceProjector& t1, VolumeParam& out) {
+  const int m = ctx.m;
+  std::vector<Eigen::Vector3d> side(static_cast<std::size_t>(m * m));
+  for (int q = 0; q < m * m; ++q) side[static_cast<std::size_t>(q)] = s.row(q).transpose();
+  const SurfaceGridRelaxResult r = relax_grid_on_surface(side, m, t1, ctx.options.t1_relax);
+  for (int q = 0; q < m * m; ++q) {
+    const Eigen::Vector3d move = r.grid[static_cast<std::size_t>(q)] - side[static_cast<std::size_t>(q)];
+    if (move.squaredNorm() == 0.0) continue;
+    for (int k = 0; k + 1 < m; ++k) {
+      const double h = ctx.params[static_cast<std::size_t>(k)];
+      const double fade = 1.0 - h * h * (3.0 - 2.0 * h);
+      s.row(q + m * m * k) += fade * move.transpose();
+    }
+  }
+  out.t1_folded_before += r.folded_before;
+  out.t1_folded_after += r.folded_after;
+}
+
 // Shell: streamlines from every sample of every face, one block per face and
 // material layer; the layer-1 block's side w0 (side 4) lies on T1.
 void add_shell_blocks(VolumeContext& ctx, const DecompositionMesh& H, const std::vector<ShellBase>& faces,
@@ -510,6 +534,7 @@ void add_shell_blocks(VolumeContext& ctx, const DecompositionMesh& H, const std:
     if (cols.spread()) ++out.spread_faces;
     for (int layer = 1; layer <= n; ++layer) {
       Eigen::MatrixXd s = layer_samples(ctx, face, cols, layer);
+      if (layer == 1 && cols.spread() && ctx.options.t1_relax.rounds > 0) relax_t1_side(ctx, s, surface[0], out);
       if (face.ruled) {
         rule_rows(s, m, ctx.params, face.ruled_mid);
         const SurfaceProjector* inner = layer < n ? &surface[static_cast<std::size_t>(layer)] : nullptr;

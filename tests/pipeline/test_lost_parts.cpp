@@ -93,6 +93,10 @@ TEST(LostParts, TheParamStageSpreadsTheFacesWhereT1BulgesBetweenSamples) {
     }
   EXPECT_TRUE(found) << "the param stage's summary names the second spreading";
   EXPECT_GT(vp.spread_faces, 32);  // 32 without it (the fans' uneven rows only)
+  // The spread faces' sides on T1, relaxed on T1 where they fold
+  // (surface_grid_relax.h): 48 folded cells -> 12 (2026-12-06).
+  EXPECT_GT(vp.t1_folded_before, 30);
+  EXPECT_LE(3 * vp.t1_folded_after, vp.t1_folded_before);
 }
 
 }  // namespace

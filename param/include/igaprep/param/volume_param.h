@@ -38,6 +38,7 @@
 
 #include "igaprep/param/base_layout.h"
 #include "igaprep/param/decomposition_mesh.h"
+#include "igaprep/param/surface_grid_relax.h"
 #include "igaprep/param/w_field.h"
 
 namespace igaprep::param {
@@ -61,6 +62,9 @@ struct VolumeParamOptions {
   // validation rate (docs/decomposition.md, "Bulges between samples"); the
   // pipeline sets it where the samples miss T1.
   double spread_deviation = 0.0;
+  // Strategy 2: a spread face's side on T1 relaxed on T1 where its cells
+  // fold there (surface_grid_relax.h); rounds = 0: off.
+  SurfaceGridRelaxOptions t1_relax;
   double ray_step = 2e-3;     // ray march step, fraction of H's bounding-box diagonal
   double stream_step = 1e-3;  // streamline step (Runge-Kutta 4), fraction of the diagonal
   ProgressCallback progress;  // streamlines traced, per core face
@@ -97,6 +101,10 @@ struct VolumeParam {
   int streamlines = 0;     // traced from the core's outer faces to T1
   int spread_faces = 0;    // core faces whose streamlines fanned out and were spread evenly on T1 (shell_spread.h)
   int folded_cells = 0;    // sample-grid cells with a non-positive corner volume (should be 0)
+  // Spread faces' sides on T1: cells folded on T1 before and after the
+  // side was relaxed on T1 (VolumeParamOptions::t1_relax).
+  int t1_folded_before = 0;
+  int t1_folded_after = 0;
 };
 
 // Inputs: H and its w-field, M's layout (whose sheet must be M as embedded in

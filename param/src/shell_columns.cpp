@@ -26,9 +26,9 @@ Eigen::Vector3d face_point(const std::vector<Eigen::Vector3d>& face, const std::
 
 Eigen::Vector3d last_point(const StreamlineColumn& c) { return c.path.row(c.path.rows() - 1).transpose(); }
 
-double smoothstep(double h) { return h * h * (3.0 - 2.0 * h); }
-
 }  // namespace
+
+double smoothstep(double h) { return h * h * (3.0 - 2.0 * h); }
 
 ShellColumns::ShellColumns(const FieldProbe& probe, double step, const std::vector<double>& params,
                            const std::vector<Eigen::Vector3d>& face, const std::function<bool(int)>& traced,

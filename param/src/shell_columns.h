@@ -18,6 +18,10 @@
 
 namespace igaprep::param {
 
+// 3 h^2 - 2 h^3: 0 at h = 0, 1 at h = 1, flat at both; how far into the
+// shell (depth h) a spread or relaxed sample's move has come.
+double smoothstep(double h);
+
 class ShellColumns {
  public:
   // face: m x m points (first index fastest) on params x params; traced(q):

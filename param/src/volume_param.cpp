@@ -511,8 +511,7 @@ void relax_t1_side(const VolumeContext& ctx, Eigen::MatrixXd& s, const SurfacePr
     const Eigen::Vector3d move = r.grid[static_cast<std::size_t>(q)] - side[static_cast<std::size_t>(q)];
     if (move.squaredNorm() == 0.0) continue;
     for (int k = 0; k + 1 < m; ++k) {
-      const double h = ctx.params[static_cast<std::size_t>(k)];
-      const double fade = 1.0 - h * h * (3.0 - 2.0 * h);
+      const double fade = 1.0 - smoothstep(ctx.params[static_cast<std::size_t>(k)]);
       s.row(q + m * m * k) += fade * move.transpose();
     }
   }

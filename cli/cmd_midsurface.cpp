@@ -17,7 +17,7 @@ void add_midsurface_command(CLI::App& app) {
     const pipeline::Case c = pipeline::read_case(*case_path);
     PrintObserver observer(output->empty() ? c.output_dir : *output, default_intermediates());
     const pipeline::Surfaces surfaces = pipeline::load_surfaces(c);
-    pipeline::base_stage(c, pipeline::midsurface_stage(c, surfaces, observer), observer);
+    pipeline::base_stage(c, surfaces, pipeline::midsurface_stage(c, surfaces, observer), observer);
     return 0;
   });
 }

@@ -98,6 +98,9 @@ void read_decomposition_section(const json& section, const std::string& file, pa
                                 param::VolumeParamOptions& volume, bool& auto_spread_deviation) {
   ObjectReader r(section, "decomposition", file);
   base.inset = r.number_in("inset", base.inset, 0.05, 0.95);
+  base.rim_reach = r.number_in("rim_reach", base.rim_reach, 0.0, 1e3);
+  if (base.rim_reach > 0.0 && base.rim_reach < 1.0)
+    r.fail("'decomposition.rim_reach' must be 0 (no cap) or at least 1, got " + std::to_string(base.rim_reach));
   base.smoothing = r.integer("smoothing", base.smoothing, 0, 100);
   base.sliding_uv = r.boolean("sliding_uv", base.sliding_uv);
   base.max_aspect = r.number_in("max_aspect", base.max_aspect, 0.0, 100.0);

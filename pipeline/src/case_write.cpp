@@ -132,7 +132,7 @@ void add_stage_options(const Case& c, json& root) {
   if (!corners.empty()) mid["corners"] = corners;
   root["midsurface"] = mid;
   const auto& v = c.volume;
-  root["decomposition"] = {{"inset", c.base.inset}, {"smoothing", c.base.smoothing}, {"sliding_uv", c.base.sliding_uv},
+  root["decomposition"] = {{"inset", c.base.inset}, {"rim_reach", c.base.rim_reach}, {"smoothing", c.base.smoothing}, {"sliding_uv", c.base.sliding_uv},
                            {"max_aspect", c.base.max_aspect},
                            {"strategy", v.strategy}, {"theta", v.theta}, {"blend", v.blend},
                            {"crest_reach", v.crest_reach}, {"surface_degree", v.surface_degree},

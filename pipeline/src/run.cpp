@@ -265,7 +265,7 @@ void run_stages(const Case& c, Observer& outer, OutputFolder* folder, RunResult&
   const Surfaces surfaces = load_surfaces(c);
   observer.stage_finished(validate_summary(surfaces, validate_timer.seconds()));
   const param::MidsurfaceResult mid = midsurface_stage(c, surfaces, observer);
-  const param::BaseSurface base = base_stage(c, mid, observer);
+  const param::BaseSurface base = base_stage(c, surfaces, mid, observer);
   const Decomposition d = decompose_stage(c, surfaces, base, observer);
   r.rectangles = static_cast<int>(d.layout.rectangles.size());
   r.boundary_segments = static_cast<int>(d.layout.crests.size());

@@ -1,6 +1,7 @@
 #include "igaprep/pipeline/midsurface.h"
 
 #include "igaprep/core/error.h"
+#include "igaprep/param/surface_projector.h"
 
 #include "igaprep/mesh/tet_volume.h"
 #include "stage_timer.h"
@@ -149,13 +150,21 @@ param::MidsurfaceResult midsurface_stage(const Case& c, const Surfaces& surfaces
   return r;
 }
 
-param::BaseSurface base_stage(const Case& c, const param::MidsurfaceResult& mid, Observer& observer) {
+param::BaseSurface base_stage(const Case& c, const Surfaces& surfaces, const param::MidsurfaceResult& mid,
+                              Observer& observer) {
   StageTimer timer;
-  param::BaseSurface b = param::base_surface(mid.m0trim.mesh, mid.polycube, c.base);
+  const mesh::TriMesh& innermost = surfaces.meshes.back();
+  const param::SurfaceProjector rim(innermost.V, innermost.F);
+  param::BaseSurface b = param::base_surface(mid.m0trim.mesh, mid.polycube, c.base, &rim);
   StageSummary s{"base", timer.seconds(),
                  text("base surface (M): %ld triangles, the trimmed midsurface inset by %.4g in its (u, v) domain, cut along %s",
                       static_cast<long>(b.m.mesh.F.rows()), b.m.inset, uv_note(c.base, b).c_str()),
                  {}};
+  if (b.inset < c.base.inset)
+    s.details.push_back(text("inset %.3g, not %.3g ('decomposition.inset'): the solid is thin at M0trim's rim (%d of the %d "
+                             "vertices within the inset, half-thickness %.3g there); M's edge kept within %.3g half-thicknesses "
+                             "of the rim ('decomposition.rim_reach')",
+                             b.inset, c.base.inset, b.rim.thin, b.rim.considered, b.rim.half_thickness, c.base.rim_reach));
   if (b.m.smoothing < c.base.smoothing)
     s.details.push_back(text("M smoothed %d rounds, not %d (decomposition.smoothing): more made it intersect itself",
                              b.m.smoothing, c.base.smoothing));

@@ -89,6 +89,8 @@ TEST(Case, BadKeysAreRefusedByName) {
       {R"(, "decomposition": {"sliding_uv": "yes"})", "'decomposition.sliding_uv' must be true or false"},
       {R"(, "decomposition": {"max_aspect": 0.5})", "'decomposition.max_aspect' must be 0 (no cuts) or at least 1"},
       {R"(, "decomposition": {"max_aspect": -1})", "decomposition.max_aspect"},
+      {R"(, "decomposition": {"rim_reach": 0.5})", "'decomposition.rim_reach' must be 0 (no cap) or at least 1"},
+      {R"(, "decomposition": {"rim_reach": -1})", "decomposition.rim_reach"},
       {R"(, "decomposition": {"spread_deviation": "always"})",
        "'decomposition.spread_deviation' must be \"auto\" or a number in [0, 0.1], got \"always\""},
       {R"(, "decomposition": {"spread_deviation": 0.2})", "decomposition.spread_deviation"},
@@ -163,7 +165,7 @@ TEST(Case, RepeatedKeysLabelsHugeNumbersAndNonRegularFilesAreRefused) {
 }
 
 TEST(Case, ValuesAreReadAndPathsResolved) {
-  const Case c = parse_case(sphere2_case(R"(, "output": "out", "decomposition": {"inset": 0.4, "strategy": 1, "max_aspect": 3},
+  const Case c = parse_case(sphere2_case(R"(, "output": "out", "decomposition": {"inset": 0.4, "strategy": 1, "max_aspect": 3, "rim_reach": 3},
       "fit": {"elements": 4, "jacobian_target": 0, "surface_iterations": 3, "surface_smoothing": 0.5}, "midsurface": {"cut": {"plane": {"point": [0, 0, 0.1],
       "normal": [0, 0, 2]}}}, "validation": {"solver": "cg", "patches": 0}, "load_case": {"fix": "outer", "solver": "amg"})"),
                             models_dir() + "/sphere2", "case.json");
@@ -173,6 +175,7 @@ TEST(Case, ValuesAreReadAndPathsResolved) {
   EXPECT_EQ(c.base.inset, 0.4);
   EXPECT_EQ(c.base.smoothing, 5);  // the one default for M's smoothing
   EXPECT_EQ(c.base.max_aspect, 3.0);
+  EXPECT_EQ(c.base.rim_reach, 3.0);
   EXPECT_EQ(c.volume.strategy, 1);
   EXPECT_TRUE(c.auto_spread_deviation);  // absent: "auto"
   EXPECT_EQ(c.volume.spread_deviation, 0.0);
@@ -229,7 +232,7 @@ TEST(Case, BuiltinCaseEqualsTheCommittedOne) {
 
 // case_json with every option reads back to the same options.
 TEST(Case, AllOptionsJsonReadsBack) {
-  const Case c = parse_case(sphere2_case(R"(, "decomposition": {"inset": 0.4, "theta": 0.9}, "export": ["vtu"],
+  const Case c = parse_case(sphere2_case(R"(, "decomposition": {"inset": 0.4, "theta": 0.9, "rim_reach": 0}, "export": ["vtu"],
       "tspline": {"relative_tolerance": 0.002, "rounds": 2},
       "load_case": {"fix": {"label": "outer", "components": "xz"}, "traction": {"label": "inner", "value": [0, 1, 0]},
                     "force": {"label": "outer", "box": [[0, 0, 0], [2, 2, 2]], "value": [0, 0, -2000]},
@@ -239,6 +242,7 @@ TEST(Case, AllOptionsJsonReadsBack) {
   const Case back = parse_case(text, models_dir() + "/sphere2", "back.json");
   EXPECT_EQ(igaprep::pipeline::case_json(back, models_dir() + "/sphere2", true), text);
   EXPECT_EQ(back.volume.theta, 0.9);
+  EXPECT_EQ(back.base.rim_reach, 0.0);
   EXPECT_TRUE(back.auto_spread_deviation);
   const Case given = parse_case(sphere2_case(R"(, "decomposition": {"spread_deviation": 0.003})"),
                                 models_dir() + "/sphere2", "case.json");

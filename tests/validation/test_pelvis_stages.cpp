@@ -40,7 +40,7 @@ TEST(PelvisStages, WaypointCutAndBlocks) {
   EXPECT_EQ(mid.polycube.domain.holes.size(), 2u);
   EXPECT_GT(mid.polycube.min_jacobian, 0.0);
 
-  const auto base = igaprep::pipeline::base_stage(c, mid, quiet);
+  const auto base = igaprep::pipeline::base_stage(c, s, mid, quiet);
   const auto d = igaprep::pipeline::decompose_stage(c, s, base, quiet);
   EXPECT_EQ(d.layout.rectangles.size(), 31u);
   const auto v = igaprep::pipeline::param_stage(c, s, d, quiet);

@@ -49,7 +49,7 @@ TEST(PropellerStages, ThinSidesCutAndBlocks) {
     if (std::abs(mid.m0trim.mesh.V(i, 0)) > 30.0) tip_height = std::max(tip_height, std::abs(mid.m0trim.mesh.V(i, 2)));
   EXPECT_LT(tip_height, 2.0);
 
-  const auto base = igaprep::pipeline::base_stage(c, mid, quiet);
+  const auto base = igaprep::pipeline::base_stage(c, s, mid, quiet);
   const auto d = igaprep::pipeline::decompose_stage(c, s, base, quiet);
   // The holes' grid has 8 rectangles, the blades' about 12 times as long as
   // they are wide; cut to at most twice the longest interval across

@@ -7,6 +7,7 @@
 #include "igaprep/mesh/tri_mesh.h"
 #include "igaprep/param/inset_base.h"
 #include "igaprep/param/polycube_2d.h"
+#include "igaprep/param/rim_reach.h"
 #include "igaprep/param/sliding_uv.h"
 
 namespace igaprep::param {
@@ -14,6 +15,9 @@ namespace igaprep::param {
 // The case's choices for M (section "decomposition" of a case file).
 struct BaseSurfaceOptions {
   double inset = 0.3;  // d = inset x half the narrowest band of M0trim's domain, in (0, 1)
+  // Where the solid is thin at M0trim's rim, d is capped so that M's edge
+  // lies at most this many half-thicknesses from the rim (rim_reach.h; 0: off).
+  double rim_reach = 2.0;
   // Rounds of Taubin smoothing of M along its normals (halved while M
   // intersects itself; 20 made M intersect itself on torus3).
   int smoothing = 5;
@@ -29,10 +33,14 @@ struct BaseSurface {
   Polycube2D polycube;     // the (u, v) M was cut along (the sliding one when used)
   SlidingUv sliding;       // empty unless options.sliding_uv
   bool sliding_used = false;
+  RimReach rim;                // the cap on d where the solid is thin at the rim (rim.cap: the d used)
+  double inset = 0.0;          // the inset fraction used (options.inset, or less where the rim capped it)
 };
 
-// Inputs: M0trim and its 2D polycube (the midsurface's result), options.
+// Inputs: M0trim and its 2D polycube (the midsurface's result), options,
+// the surface M0trim's boundary lies on (Tn; null: no cap by the rim).
 // Output: M. Throws like inset_base_surface.
-BaseSurface base_surface(const mesh::TriMesh& m0trim, const Polycube2D& polycube, const BaseSurfaceOptions& options);
+BaseSurface base_surface(const mesh::TriMesh& m0trim, const Polycube2D& polycube, const BaseSurfaceOptions& options,
+                         const SurfaceProjector* rim = nullptr);
 
 }  // namespace igaprep::param

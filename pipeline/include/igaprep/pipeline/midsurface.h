@@ -15,6 +15,8 @@ namespace igaprep::pipeline {
 param::MidsurfaceResult midsurface_stage(const Case& c, const Surfaces& surfaces, Observer& observer);
 
 // Intermediates offered: base_surface (M with its (u, v)), base_surface_corners.
-param::BaseSurface base_stage(const Case& c, const param::MidsurfaceResult& mid, Observer& observer);
+// The innermost surface (M0trim's rim) caps the inset where the solid is thin.
+param::BaseSurface base_stage(const Case& c, const Surfaces& surfaces, const param::MidsurfaceResult& mid,
+                              Observer& observer);
 
 }  // namespace igaprep::pipeline

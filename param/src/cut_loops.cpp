@@ -282,17 +282,22 @@ CutLoops cut_by_plane(const mesh::TriMesh& T1, const CutPlane& plane, const std:
   if (!(nn > 0.0) || !plane.normal.allFinite() || !plane.point.allFinite())
     throw bad_input(name + ": the cut plane needs a finite point and a non-zero normal");
   const Eigen::Vector3d n = plane.normal / nn;
-  const double tol = snap * mean_edge_length(T1);
-  Eigen::VectorXd s(T1.V.rows());
-  for (Eigen::Index i = 0; i < T1.V.rows(); ++i) {
-    const double d = n.dot(T1.V.row(i).transpose() - plane.point);
-    s(i) = std::abs(d) < tol ? 0.0 : d;
-  }
   const double size = (T1.V.colwise().maxCoeff() - T1.V.colwise().minCoeff()).norm();
   const std::string src = "plane through " + point_text(plane.point, size) + " with normal " + point_text(n, 1.0);
-  if (s.maxCoeff() <= 0.0 || s.minCoeff() >= 0.0)
-    throw bad_input(name + ": the " + src + " does not cut the surface into two sides; " + kAdvice);
-  return insert_zero_set(T1, s, name, src);
+  Eigen::VectorXd d(T1.V.rows());
+  for (Eigen::Index i = 0; i < T1.V.rows(); ++i) d(i) = n.dot(T1.V.row(i).transpose() - plane.point);
+  // Where the solid is thinner across the plane than the snapping tolerance
+  // (a plate a tenth of an edge thick, cut at its middle) every vertex would
+  // count as on the plane: the tolerance is then cut down tenfold at a time,
+  // to exact signs at last, until the plane leaves vertices on both sides.
+  const double tol = snap * mean_edge_length(T1);
+  for (double t : {tol, 0.1 * tol, 0.01 * tol, 0.0}) {
+    Eigen::VectorXd s = d;
+    for (Eigen::Index i = 0; i < s.size(); ++i)
+      if (std::abs(s(i)) < t) s(i) = 0.0;
+    if (s.maxCoeff() > 0.0 && s.minCoeff() < 0.0) return insert_zero_set(T1, s, name, src);
+  }
+  throw bad_input(name + ": the " + src + " does not cut the surface into two sides; " + kAdvice);
 }
 
 CutLoops cut_by_field(const mesh::TriMesh& T1, const Eigen::VectorXd& field, const std::string& name,

@@ -91,6 +91,29 @@ TEST(CutLoops, PlaneLoopsLieOnThePlane) {
   }
 }
 
+// A plate thinner than the snapping tolerance (5 % of its mean edge, 0.04
+// here, against 0.001 from the midplane to either face): every vertex would
+// count as on the plane. The tolerance shrinks until the plane parts them,
+// and the loop runs round the rim at mid-height.
+TEST(CutLoops, APlateThinnerThanTheSnappingToleranceIsCutAtItsMiddle) {
+  mesh::TriMesh plate;
+  plate.V.resize(8, 3);
+  for (int i = 0; i < 8; ++i) plate.V.row(i) << (i & 1), (i >> 1 & 1), (i & 4 ? 0.002 : 0.0);
+  plate.F.resize(12, 3);
+  plate.F << 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5;
+  CutPlane p;
+  p.point = Eigen::Vector3d(0.5, 0.5, 0.001);
+  p.normal = Eigen::Vector3d(0.0, 0.0, 1.0);
+  const CutLoops cut = cut_by_plane(plate, p, "plate", 0.05);
+  ASSERT_EQ(cut.loops.size(), 1u);
+  expect_valid_loops(cut);
+  EXPECT_GE(cut.loops[0].size(), 4u);
+  for (int v : cut.loops[0]) EXPECT_NEAR(cut.surface.V(v, 2), 0.001, 1e-15);
+  // A plane beside the plate is still refused.
+  p.point.z() = 0.003;
+  EXPECT_THROW(cut_by_plane(plate, p, "plate", 0.05), Error);
+}
+
 TEST(CutLoops, ExplicitLoopsAreKept) {
   const auto model = models::make_builtin_model("sphere2");
   const mesh::TriMesh& T1 = model.surfaces[0];

@@ -35,7 +35,9 @@ int closed_surface_genus(const Eigen::MatrixXi& F);
 
 // Inputs: T1 (closed, oriented outward), the plane, `name` for messages.
 // Vertices closer to the plane than snap * (mean edge length) count as on it
-// (the loop then passes through them instead of making slivers).
+// (the loop then passes through them instead of making slivers); where that
+// puts every vertex on one side or on the plane (a plate thinner than the
+// tolerance) a tenth, a hundredth and no tolerance are tried.
 // Output: the validated cut. Throws bad_input when the plane misses T1, lies
 // in one of its faces, or the loops are wrong (see validate_cut).
 CutLoops cut_by_plane(const mesh::TriMesh& T1, const CutPlane& plane, const std::string& name = "T1",

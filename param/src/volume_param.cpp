@@ -126,9 +126,9 @@ double checked_w0(const DecompositionMesh& H, const WField& w, const std::vector
     throw bad_input("volume parameterization: strategy must be 1 or 2, got " + std::to_string(options.strategy));
   if (m < 3 || params.front() != 0.0 || params.back() != 1.0)
     throw bad_input("volume parameterization: need at least 3 sample parameters from 0 to 1");
-  if (!(options.theta > 0.05 && options.theta < 1.5))
+  if (!(options.theta >= 0.05 && options.theta <= 1.5))
     throw bad_input("volume parameterization: theta = " + std::to_string(options.theta) +
-                    " is outside (0.05, 1.5) radians");
+                    " is outside [0.05, 1.5] radians");
   const double inner = static_cast<double>(n - 1) / n;
   // Default: midway between Tn and M, and no lower than 0.75 (nearer to T1
   // the streamlines from the core spread more unevenly; measured on torus3).

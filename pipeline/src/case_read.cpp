@@ -410,6 +410,11 @@ Case parse_case(const std::string& json_text, const std::string& folder_name, co
   c.materials = read_materials(r, c.surfaces.size(), source);
   c.output_dir = (folder / r.string("output", "output")).lexically_normal().string();
   read_sections(r, source, c);
+  // w0 lies between Tn and M: known only with the number of surfaces.
+  const double innermost = static_cast<double>(c.surfaces.size() - 1) / static_cast<double>(c.surfaces.size());
+  if (c.volume.w0 >= 0.0 && !(c.volume.w0 > innermost && c.volume.w0 < 1.0))
+    r.fail("'decomposition.w0' must lie in (" + std::to_string(innermost) + ", 1) with " +
+           std::to_string(c.surfaces.size()) + " surface(s) (T(n+1) between Tn and M), got " + std::to_string(c.volume.w0));
   r.refuse_unknown();
   return c;
 }

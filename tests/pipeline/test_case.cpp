@@ -91,6 +91,8 @@ TEST(Case, BadKeysAreRefusedByName) {
       {R"(, "decomposition": {"max_aspect": -1})", "decomposition.max_aspect"},
       {R"(, "decomposition": {"rim_reach": 0.5})", "'decomposition.rim_reach' must be 0 (no cap) or at least 1"},
       {R"(, "decomposition": {"rim_reach": -1})", "decomposition.rim_reach"},
+      {R"(, "decomposition": {"w0": 1})", "'decomposition.w0' must lie in (0.500000, 1) with 2 surface(s)"},
+      {R"(, "decomposition": {"w0": 0.4})", "'decomposition.w0' must lie in (0.500000, 1) with 2 surface(s)"},
       {R"(, "decomposition": {"spread_deviation": "always"})",
        "'decomposition.spread_deviation' must be \"auto\" or a number in [0, 0.1], got \"always\""},
       {R"(, "decomposition": {"spread_deviation": 0.2})", "decomposition.spread_deviation"},

@@ -688,13 +688,20 @@ DomainSide side_of_travel(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
 
 // The outer loop's segments: per side of the rectangle, the pieces between
 // its corners and its arms' corners.
+// The positions on the outer loop that side k runs through: its corner, the
+// corners of the arms on it, the next corner.
+std::vector<int> side_positions(const PolycubeLoop& L, int k) {
+  std::vector<int> pos{L.corners[k]};
+  for (const LoopArm& arm : L.arms)
+    if (arm_in_segment(L, arm, k)) pos.insert(pos.end(), arm.corners.begin(), arm.corners.end());
+  pos.push_back(L.corners[(k + 1) % 4]);
+  return pos;
+}
+
 void outer_segments(const PolycubeLoop& L, int loop, const RectilinearDomain& dom, std::vector<BoundarySegment>& segs) {
   const std::size_t n = L.vertices.size();
   for (int k = 0; k < 4; ++k) {
-    std::vector<int> pos{L.corners[k]};
-    for (const LoopArm& arm : L.arms)
-      if (arm_in_segment(L, arm, k)) pos.insert(pos.end(), arm.corners.begin(), arm.corners.end());
-    pos.push_back(L.corners[(k + 1) % 4]);
+    const std::vector<int> pos = side_positions(L, k);
     const std::vector<Eigen::Vector2d> pts = side_walk(dom, L.sides[k]);
     if (pts.size() != pos.size()) throw internal_error("polycube: an arm of the domain has no lobe on its side of the loop");
     for (std::size_t i = 0; i + 1 < pos.size(); ++i) {
@@ -713,6 +720,16 @@ void outer_segments(const PolycubeLoop& L, int loop, const RectilinearDomain& do
 }
 
 }  // namespace
+
+bool arms_apart(const std::vector<PolycubeLoop>& loops) {
+  for (const PolycubeLoop& L : loops)
+    for (int k = 0; L.outer && k < 4; ++k) {
+      const std::vector<int> pos = side_positions(L, k);
+      for (std::size_t i = 0; i + 1 < pos.size(); ++i)
+        if (pos[i] == pos[i + 1]) return false;
+    }
+  return true;
+}
 
 Eigen::Vector4d arm_box(const RectilinearDomain& d, const DomainArm& arm) {
   const auto [start, dir] = side_line(d, arm.side);
@@ -1127,11 +1144,13 @@ Polycube2D polycube_2d(mesh::TriMesh& sheet, const std::vector<std::vector<int>>
   for (const PolycubeLoop& L : pc.loops) pc.lobes += static_cast<int>(L.arms.size());
   refine_hole_corners(sheet, pc.loops);
   // Without their arms, the corners are chosen again as if there were no lobes.
-  auto drop_arms = [&] {
+  auto drop_arms = [&](const char* why) {
     pc.loops = automatic_corners(sheet, loops, pc.frame, false);
     pc.arms_dropped = true;
+    pc.arms_dropped_reason = why;
   };
-  if (pc.lobes > 0 && !find_neck_paths(sheet, pc.loops)) drop_arms();
+  if (pc.lobes > 0 && !arms_apart(pc.loops)) drop_arms("two of them share a neck's corner");
+  if (pc.lobes > 0 && !pc.arms_dropped && !find_neck_paths(sheet, pc.loops)) drop_arms("a neck has no path across the sheet");
   if (!pc.arms_dropped && pc.lobes > 0) split_fixed_chords(sheet, pc.loops);
   for (;;) {
     pc.domain = rectilinear_domain(sheet, pc.loops);
@@ -1144,7 +1163,7 @@ Polycube2D polycube_2d(mesh::TriMesh& sheet, const std::vector<std::vector<int>>
     }
     // The arms' reflex corners may fold the map where the rectangle alone does not.
     if (pc.min_jacobian > 0.0 || pc.domain.arms.empty()) break;
-    drop_arms();
+    drop_arms("the (u, v) map with them folded");
   }
   if (!(pc.min_jacobian > 0.0)) {
     int flipped = 0;

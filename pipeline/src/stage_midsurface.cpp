@@ -98,7 +98,7 @@ std::vector<std::string> midsurface_lines(const param::MidsurfaceResult& r) {
   out.push_back(text("domain %.6g x %.6g with %zu holes, (u, v) weights: %s", pc.domain.width, pc.domain.height,
                      pc.domain.holes.size(), pc.weights.c_str()));
   if (pc.arms_dropped)
-    out.push_back(text("lobes of the outer loop: %d; their arms were dropped (the (u, v) map with them folded)", pc.lobes));
+    out.push_back(text("lobes of the outer loop: %d; their arms were dropped (%s)", pc.lobes, pc.arms_dropped_reason.c_str()));
   else if (pc.lobes > 0)
     out.push_back(text("lobes of the outer loop: %d, each an arm of the domain:", pc.lobes));
   for (const auto& arm : pc.domain.arms) {

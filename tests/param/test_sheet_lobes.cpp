@@ -217,3 +217,24 @@ TEST(PolycubeArms, TheInsetMovesAnArmsSidesInAndKeepsItJoined) {
   EXPECT_EQ(layout.rectangles.size(), 4u);
   EXPECT_EQ(layout.domain_edges.size(), 8u);
 }
+
+
+// Two arms on one side of the outer loop that share a neck's corner leave no
+// edge between them: refused, so that the map is made without arms.
+TEST(PolycubeArms, ArmsThatShareANecksCornerAreNotApart) {
+  PolycubeLoop L;
+  L.outer = true;
+  for (int v = 0; v < 40; ++v) L.vertices.push_back(v);
+  L.corners = {0, 10, 20, 30};
+  LoopArm a, b;
+  a.corners = {2, 3, 4, 5};
+  b.corners = {6, 7, 8, 9};
+  L.arms = {a, b};
+  EXPECT_TRUE(arms_apart({L}));
+  L.arms[1].corners = {5, 6, 7, 8};
+  EXPECT_FALSE(arms_apart({L}));
+  // An arm from the side's own corner is refused too.
+  L.arms = {b};
+  L.arms[0].corners = {10, 11, 12, 13};
+  EXPECT_FALSE(arms_apart({L}));
+}

@@ -181,8 +181,16 @@ struct Polycube2D {
   double min_jacobian = 0.0, max_jacobian = 0.0;
   std::string weights;                   // "cotangent" or "mean value" (fallback)
   int lobes = 0;                         // lobes found on the outer loop
-  bool arms_dropped = false;             // they were found, but the map with their arms folded
+  bool arms_dropped = false;             // they were found, but the map was made without their arms
+  std::string arms_dropped_reason;       // why
 };
+
+// Whether every segment between the outer loop's corners and its arms'
+// corners has at least one edge. Two lobes found side by side can share a
+// neck's corner (seen on the hand of ../shared/models cut by its palm
+// plane), which would leave a segment of no length between their arms:
+// polycube_2d then maps without arms.
+bool arms_apart(const std::vector<PolycubeLoop>& loops);
 
 // The whole step. Inputs: sheet (M0trim, after split_boundary_ears; refined in
 // place at reflex corners, see refine_hole_corners), its boundary loops, corner

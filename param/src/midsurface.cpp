@@ -264,7 +264,8 @@ Midsurface extract_midsurface(const mesh::TetMesh& tets, const CutLoops& cut, co
     if (s == 0.0) break;
   }
   throw bad_input(problem + " (cut: " + cut.source +
-                  "); the cut loops must bound one sheet through the solid: choose another plane or loops");
+                  "); the cut loops must bound one sheet through the solid: give another plane or loops ('midsurface.cut'), "
+                  "or a finer tet mesh ('tetmesh.max_volume') where they run closer together than a tet is wide");
 }
 
 PathLengthStats midsurface_path_lengths(const mesh::TetMesh& tets, const Eigen::VectorXd& f, const CutLoops& cut) {

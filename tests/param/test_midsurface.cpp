@@ -129,4 +129,30 @@ TEST(MidsurfaceRefusal, ATetWithFourVerticesOnTheLoopsIsBadInputNamingIt) {
   }
 }
 
+// The same tet through extract_midsurface (with and without snapping): the
+// message keeps the reason and names the case keys that change it.
+TEST(MidsurfaceRefusal, ATetAtFZeroNamesTheCaseKeysThatChangeIt) {
+  mesh::TetMesh tets;
+  tets.V.resize(4, 3);
+  tets.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  tets.T.resize(1, 4);
+  tets.T << 0, 1, 2, 3;
+  CutLoops cut;
+  cut.surface.V = tets.V;
+  cut.surface.F.resize(4, 3);
+  cut.surface.F << 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3;
+  cut.source = "a test's loops";
+  try {
+    extract_midsurface(tets, cut, Eigen::VectorXd::Zero(4), 0.05);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::BadInput);
+    const std::string m = e.what();
+    EXPECT_NE(m.find("all four vertices of tet 0"), std::string::npos) << m;
+    EXPECT_NE(m.find("(cut: a test's loops)"), std::string::npos) << m;
+    EXPECT_NE(m.find("'midsurface.cut'"), std::string::npos) << m;
+    EXPECT_NE(m.find("'tetmesh.max_volume'"), std::string::npos) << m;
+  }
+}
+
 }  // namespace

@@ -27,7 +27,7 @@ BaseSurface base_surface(const mesh::TriMesh& m0trim, const Polycube2D& polycube
   if (rim && options.rim_reach > 0.0) {
     std::vector<std::vector<int>> loops;
     for (const PolycubeLoop& l : out.polycube.loops) loops.push_back(l.vertices);
-    out.rim = rim_reach_cap(m0trim, out.polycube.uv, loops, *rim, options.inset * half_band, options.rim_reach);
+    out.rim = rim_reach_cap(m0trim, out.polycube.uv, loops, *rim, out.rim.cap, options.rim_reach);
     out.inset = std::clamp(out.rim.cap / half_band, std::min(kMinCappedInset, options.inset), options.inset);
   }
   out.m = inset_base_surface(m0trim, out.polycube, out.inset, options.smoothing);

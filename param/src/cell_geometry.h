@@ -1,5 +1,7 @@
 #pragma once
 // Small helpers shared by the param sources (not installed).
+#include <algorithm>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products
 
@@ -29,6 +31,17 @@ inline double cell_measure(const Eigen::MatrixXd& V, const Eigen::MatrixXi& C, E
   const Eigen::Vector3d e1 = vrow(V, C(c, 1)) - x0, e2 = vrow(V, C(c, 2)) - x0;
   if (C.cols() == 4) return std::abs(e1.dot(e2.cross(vrow(V, C(c, 3)) - x0))) / 6.0;
   return 0.5 * e1.cross(e2).norm();
+}
+
+// Distance from x to the segment [a, b] in 2D or 3D (to a when the segment
+// has no length).
+template <int N>
+double distance_to_segment(const Eigen::Matrix<double, N, 1>& x, const Eigen::Matrix<double, N, 1>& a,
+                           const Eigen::Matrix<double, N, 1>& b) {
+  const Eigen::Matrix<double, N, 1> ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double t = len2 > 0.0 ? std::clamp((x - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return (x - (a + t * ab)).norm();
 }
 
 }  // namespace igaprep::param::detail

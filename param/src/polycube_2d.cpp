@@ -686,8 +686,6 @@ DomainSide side_of_travel(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return d.y() > 0.0 ? DomainSide::Right : DomainSide::Left;
 }
 
-// The outer loop's segments: per side of the rectangle, the pieces between
-// its corners and its arms' corners.
 // The positions on the outer loop that side k runs through: its corner, the
 // corners of the arms on it, the next corner.
 std::vector<int> side_positions(const PolycubeLoop& L, int k) {
@@ -698,6 +696,8 @@ std::vector<int> side_positions(const PolycubeLoop& L, int k) {
   return pos;
 }
 
+// The outer loop's segments: per side of the rectangle, the pieces between
+// its corners and its arms' corners.
 void outer_segments(const PolycubeLoop& L, int loop, const RectilinearDomain& dom, std::vector<BoundarySegment>& segs) {
   const std::size_t n = L.vertices.size();
   for (int k = 0; k < 4; ++k) {

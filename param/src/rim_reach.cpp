@@ -1,26 +1,22 @@
 #include "igaprep/param/rim_reach.h"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 
 #include "igaprep/param/surface_projector.h"
+#include "cell_geometry.h"
 
 namespace igaprep::param {
 
 namespace {
 
+// Distance from p to the nearest of the segments [a[s], b[s]].
 template <int N>
 double distance_to_segments(const Eigen::Matrix<double, N, 1>& p, const std::vector<Eigen::Matrix<double, N, 1>>& a,
                             const std::vector<Eigen::Matrix<double, N, 1>>& b) {
   double best = std::numeric_limits<double>::infinity();
-  for (std::size_t s = 0; s < a.size(); ++s) {
-    const Eigen::Matrix<double, N, 1> ab = b[s] - a[s];
-    const double len2 = ab.squaredNorm();
-    const double t = len2 > 0.0 ? std::clamp((p - a[s]).dot(ab) / len2, 0.0, 1.0) : 0.0;
-    best = std::min(best, (p - (a[s] + t * ab)).squaredNorm());
-  }
-  return std::sqrt(best);
+  for (std::size_t s = 0; s < a.size(); ++s) best = std::min(best, detail::distance_to_segment<N>(p, a[s], b[s]));
+  return best;
 }
 
 double median(std::vector<double> v) {

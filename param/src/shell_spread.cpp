@@ -13,6 +13,7 @@
 
 #include "igaprep/core/error.h"
 #include "igaprep/core/parallel.h"
+#include "cell_geometry.h"
 
 namespace igaprep::param {
 namespace {
@@ -33,13 +34,6 @@ bool uneven(const std::vector<Eigen::Vector3d>& ends, double ratio) {
   for (std::size_t i = 1; i < ends.size(); ++i) largest = std::max(largest, (ends[i] - ends[i - 1]).norm());
   const double mean = chord_length(ends) / static_cast<double>(ends.size() - 1);
   return largest > ratio * mean;
-}
-
-double distance_to_segment(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  const Eigen::Vector3d ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0.0 ? std::clamp((x - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (x - (a + t * ab)).norm();
 }
 
 // The cubic through the ends at params[first .. first + 3] (Lagrange), at x.
@@ -79,7 +73,7 @@ void refine(const std::function<Eigen::Vector3d(double)>& end, std::list<CurvePo
   if (depth == 0 || (short_chord && !(deviation > 0.0))) return;
   const double mid = 0.5 * (a->s + b->s);
   const Eigen::Vector3d e = end(mid);
-  if (short_chord && distance_to_segment(e, a->end, b->end) <= deviation) return;
+  if (short_chord && detail::distance_to_segment<3>(e, a->end, b->end) <= deviation) return;
   const auto m = curve.insert(b, {mid, e});
   refine(end, curve, a, target, deviation, depth - 1);
   refine(end, curve, m, target, deviation, depth - 1);

@@ -18,6 +18,7 @@
 #include "igaprep/param/surface_grid_relax.h"
 #include "igaprep/param/surface_projector.h"
 #include "igaprep/param/tet_topology.h"
+#include "cell_geometry.h"
 #include "shell_columns.h"
 
 namespace igaprep::param {
@@ -56,12 +57,6 @@ using Grid2 = std::vector<Eigen::Vector3d>;  // m x m, first index fastest
 // (1 - t) p + t q: exact at t = 0 and t = 1, so blocks that share a face
 // compute its points bit for bit alike.
 Eigen::Vector3d lerp(const Eigen::Vector3d& p, const Eigen::Vector3d& q, double t) { return (1.0 - t) * p + t * q; }
-
-double segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-  return (p - (a + t * ab)).norm();
-}
 
 // The sample cells whose corner tet at (i, j, k) is not positive.
 int count_folded(const SampledBlock& b, int m) {
@@ -179,7 +174,7 @@ struct VolumeContext {
     const SheetPoint sp = sheet.at(uv);
     Frame f{sp.position, sp.normal, Eigen::Vector3d::Zero(), sp.triangle, sp.bary};
     for (const DomainEdge& e : layout.domain_edges) {
-      const double d = segment_distance(uv, e.a, e.b);
+      const double d = detail::distance_to_segment<2>(uv, e.a, e.b);
       if (d >= kappa) continue;
       Eigen::Vector3d b = e.outward.x() * sp.du + e.outward.y() * sp.dv;
       b -= b.dot(f.normal) * f.normal;

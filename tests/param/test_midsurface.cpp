@@ -111,12 +111,18 @@ TEST(MidsurfaceRefusal, PlaneAcrossTheTubeGivesTwoSheets) {
 
 namespace {
 
-TEST(MidsurfaceRefusal, ATetWithFourVerticesOnTheLoopsIsBadInputNamingIt) {
+// One tet, its four vertices at the corners of the unit simplex.
+mesh::TetMesh unit_tet() {
   mesh::TetMesh tets;
   tets.V.resize(4, 3);
   tets.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
   tets.T.resize(1, 4);
   tets.T << 0, 1, 2, 3;
+  return tets;
+}
+
+TEST(MidsurfaceRefusal, ATetWithFourVerticesOnTheLoopsIsBadInputNamingIt) {
+  const mesh::TetMesh tets = unit_tet();
   const Eigen::VectorXd f = Eigen::VectorXd::Zero(4);
   try {
     zero_sheet(tets, f, 4, 0.0);
@@ -132,11 +138,7 @@ TEST(MidsurfaceRefusal, ATetWithFourVerticesOnTheLoopsIsBadInputNamingIt) {
 // The same tet through extract_midsurface (with and without snapping): the
 // message keeps the reason and names the case keys that change it.
 TEST(MidsurfaceRefusal, ATetAtFZeroNamesTheCaseKeysThatChangeIt) {
-  mesh::TetMesh tets;
-  tets.V.resize(4, 3);
-  tets.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
-  tets.T.resize(1, 4);
-  tets.T << 0, 1, 2, 3;
+  const mesh::TetMesh tets = unit_tet();
   CutLoops cut;
   cut.surface.V = tets.V;
   cut.surface.F.resize(4, 3);

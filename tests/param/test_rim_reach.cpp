@@ -14,13 +14,19 @@ using igaprep::param::rim_reach_cap;
 using igaprep::param::SurfaceProjector;
 using param_test::square_tris;
 
-// The surface of the box [0, 1] x [0, 1] x [-h, h] (12 triangles).
+// The surface of the box [0, x1] x [0, 1] x [-h, h] (12 triangles, outward).
+igaprep::mesh::TriMesh box_mesh(double x1, double h) {
+  igaprep::mesh::TriMesh m;
+  m.V.resize(8, 3);
+  for (int i = 0; i < 8; ++i) m.V.row(i) << x1 * (i & 1), (i >> 1 & 1), (i & 4 ? h : -h);
+  m.F.resize(12, 3);
+  m.F << 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5;
+  return m;
+}
+
 SurfaceProjector box_surface(double h) {
-  Eigen::MatrixXd V(8, 3);
-  for (int i = 0; i < 8; ++i) V.row(i) << (i & 1), (i >> 1 & 1), (i & 4 ? h : -h);
-  Eigen::MatrixXi F(12, 3);
-  F << 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5;
-  return SurfaceProjector(V, F);
+  const igaprep::mesh::TriMesh m = box_mesh(1.0, h);
+  return SurfaceProjector(m.V, m.F);
 }
 
 // The square sheet's boundary, counter-clockwise.
@@ -77,18 +83,15 @@ TEST(RimReach, AThickRimKeepsTheNominalInset) {
 // tenth of the vertices within the inset) does not shrink the whole inset.
 TEST(RimReach, AThinSpotAloneKeepsTheNominalInset) {
   const int n = 60;
-  igaprep::mesh::TriMesh sheet = square_tris(n);
+  const igaprep::mesh::TriMesh sheet = square_tris(n);
   const Eigen::MatrixXd uv = sheet.V.leftCols(2);
   // The rim: the thick box, and the thin slab as a second box whose top
   // lies 0.01 above the sheet where x < 0.1.
+  const igaprep::mesh::TriMesh thick = box_mesh(1.0, 5.0), thin = box_mesh(0.1, 0.01);
   Eigen::MatrixXd V(16, 3);
-  for (int i = 0; i < 8; ++i) {
-    V.row(i) << (i & 1), (i >> 1 & 1), (i & 4 ? 5.0 : -5.0);
-    V.row(8 + i) << 0.1 * (i & 1), (i >> 1 & 1), (i & 4 ? 0.01 : -0.01);
-  }
+  V << thick.V, thin.V;
   Eigen::MatrixXi F(24, 3);
-  F.topRows(12) << 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5;
-  F.bottomRows(12) = F.topRows(12).array() + 8;
+  F << thick.F, thin.F.array() + 8;
   const auto r = rim_reach_cap(sheet, uv, square_loop(n), SurfaceProjector(V, F), 0.15, 2.0);
   EXPECT_GT(r.thin, 0);
   EXPECT_LT(r.thin, r.considered / 4);

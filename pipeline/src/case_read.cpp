@@ -369,7 +369,7 @@ void read_sections(ObjectReader& r, const std::string& file, Case& c) {
   if (const json* t = r.find("tetmesh")) c.tetmesh = read_tetmesh(*t, file);
   if (const json* m = r.find("midsurface")) c.midsurface = read_midsurface_section(*m, file);
   if (const json* d = r.find("decomposition")) read_decomposition_section(*d, file, c.base, c.volume, c.auto_spread_deviation);
-  if (const json* f = r.find("fit")) read_fit_section(*f, file, c.fit, c.surface_fit, c.jacobian);
+  if (const json* f = r.find("fit")) read_fit_section(*f, file, c.fit, c.fit_retry, c.surface_fit, c.jacobian);
   if (const json* e = r.find("export")) c.export_formats = read_export(*e, file);
   if (const json* k = r.find("check")) c.check = read_check(*k, file);
   if (const json* v = r.find("validation")) c.validation = read_validation(*v, file);

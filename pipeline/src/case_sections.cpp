@@ -126,10 +126,15 @@ void read_decomposition_section(const json& section, const std::string& file, pa
 }
 
 void read_fit_section(const json& section, const std::string& file, spline::BlockFitOptions& fit,
-                      spline::SurfaceFitOptions& surface, spline::JacobianOptimizationOptions& jacobian) {
+                      CaseFitRetry& retry, spline::SurfaceFitOptions& surface,
+                      spline::JacobianOptimizationOptions& jacobian) {
   ObjectReader r(section, "fit", file);
   fit.degree = r.integer("degree", fit.degree, 1, 5);
   fit.elements = r.integer("elements", fit.elements, 1, 32);
+  // An explicit element count is kept unless max_elements asks for more.
+  retry.max_elements = r.find("elements") ? fit.elements : retry.max_elements;
+  retry.max_elements = r.integer("max_elements", retry.max_elements, 1, 32);
+  retry.max_model_elements = r.integer("max_model_elements", static_cast<int>(retry.max_model_elements), 1, 100000000);
   fit.oversample = r.integer("oversample", fit.oversample, 1, 8);
   surface.iterations = r.integer("surface_iterations", surface.iterations, 0, 100);
   surface.smoothing = r.number_in("surface_smoothing", surface.smoothing, 0.0, 1e6);

@@ -22,6 +22,7 @@ param::MidsurfaceOptions read_midsurface_section(const nlohmann::json& section, 
 void read_decomposition_section(const nlohmann::json& section, const std::string& file, param::BaseSurfaceOptions& base,
                                 param::VolumeParamOptions& volume, bool& auto_spread_deviation);
 void read_fit_section(const nlohmann::json& section, const std::string& file, spline::BlockFitOptions& fit,
-                      spline::SurfaceFitOptions& surface, spline::JacobianOptimizationOptions& jacobian);
+                      CaseFitRetry& retry, spline::SurfaceFitOptions& surface,
+                      spline::JacobianOptimizationOptions& jacobian);
 
 }  // namespace igaprep::pipeline

@@ -138,7 +138,8 @@ void add_stage_options(const Case& c, json& root) {
                            {"crest_reach", v.crest_reach}, {"surface_degree", v.surface_degree},
                            {"spread_deviation", c.auto_spread_deviation ? json("auto") : json(v.spread_deviation)}};
   if (v.w0 >= 0.0) root["decomposition"]["w0"] = v.w0;  // absent: midway, at least 0.75
-  root["fit"] = {{"degree", c.fit.degree}, {"elements", c.fit.elements}, {"oversample", c.fit.oversample},
+  root["fit"] = {{"degree", c.fit.degree}, {"elements", c.fit.elements}, {"max_elements", c.fit_retry.max_elements},
+                 {"max_model_elements", c.fit_retry.max_model_elements}, {"oversample", c.fit.oversample},
                  {"surface_iterations", c.surface_fit.iterations}, {"surface_smoothing", c.surface_fit.smoothing},
                  {"jacobian_target", c.jacobian.target}, {"jacobian_iterations", c.jacobian.iterations},
                  {"jacobian_sweeps", c.jacobian.sweeps},

@@ -14,6 +14,7 @@
 #include "igaprep/export/pvd.h"
 #include "igaprep/pipeline/check.h"
 #include "igaprep/pipeline/export.h"
+#include "igaprep/pipeline/fit_retry.h"
 #include "igaprep/pipeline/midsurface.h"
 #include "igaprep/pipeline/provenance.h"
 #include "igaprep/pipeline/reduce.h"
@@ -269,18 +270,21 @@ void run_stages(const Case& c, Observer& outer, OutputFolder* folder, RunResult&
   const Decomposition d = decompose_stage(c, surfaces, base, observer);
   r.rectangles = static_cast<int>(d.layout.rectangles.size());
   r.boundary_segments = static_cast<int>(d.layout.crests.size());
-  Fit fit = fit_stage(c, surfaces, d, param_stage(c, surfaces, d, observer), observer);
-  fill_provenance(c, fit.model);
-
   std::optional<ReduceFigures> reduced;
+  Fit fit;
   Check check;
-  if (c.reduce) {
+  if (c.reduce) {  // the reduction checks the reduced model; a finer fit is not tried
+    fit = fit_stage(c, surfaces, d, param_stage(c, surfaces, d, observer), observer);
+    fill_provenance(c, fit.model);
     CheckedReduction cr = reduce_checked(fit.model, *c.reduce, surfaces.inputs, c.check, observer);
     fit.model = std::move(cr.reduction.model);
     reduced = cr.reduction.figures;
     check = std::move(cr.reduced);
   } else {
-    check = check_stage(fit.model, surfaces.inputs, c.check, observer);
+    FitAttempt kept = fit_and_check(c, surfaces, d, observer);
+    fill_provenance(kept.settings, kept.fit.model);
+    fit = std::move(kept.fit);
+    check = std::move(kept.check);
   }
   r.report = std::move(check.report);
   r.report.model = "model.h5";

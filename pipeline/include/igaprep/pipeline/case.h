@@ -53,6 +53,14 @@ struct CaseValidation {
   iga_check::LinearSolver solver = iga_check::LinearSolver::Cholesky;  // CHOLMOD when present
 };
 
+// Section "fit", keys max_elements and max_model_elements: when the check
+// fails for want of resolution, the blocks are sampled and fitted again with
+// more elements per direction (fit_retry.h).
+struct CaseFitRetry {
+  int max_elements = 12;                  // per direction; at most fit.elements: never
+  long long max_model_elements = 200000;  // a finer attempt's elements in all, at most
+};
+
 // A labelled boundary, optionally only its sides whose centre (the mean of
 // the side's control points) lies in the box [lo, hi].
 struct CaseSideSelection {
@@ -109,6 +117,7 @@ struct Case {
   // (the param stage then runs again with a share of that limit).
   bool auto_spread_deviation = true;
   spline::BlockFitOptions fit;          // section "fit"
+  CaseFitRetry fit_retry;               // section "fit", keys max_elements, max_model_elements
   spline::SurfaceFitOptions surface_fit;         // section "fit", keys surface_* (iterations 0: off)
   spline::JacobianOptimizationOptions jacobian;  // section "fit", keys jacobian_*
   // Section "export": besides model.h5, in order. Default: model.vtu, so

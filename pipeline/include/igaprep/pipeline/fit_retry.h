@@ -1,0 +1,61 @@
+#pragma once
+// A finer fit where the check fails for want of resolution: the blocks are
+// sampled and fitted again with about 1.5 times as many elements per
+// direction, as long as the samples themselves are sound. A fit of folded
+// samples only follows the folds more closely when it is finer (the
+// propeller at 4 and 8 elements per direction: 128 and 952 negative
+// elements), so a run whose sample cells are folded in more than a small
+// share is not refitted (docs/decomposition.md, "A finer fit").
+#include <string>
+
+#include "igaprep/param/volume_param.h"
+#include "igaprep/pipeline/case.h"
+#include "igaprep/pipeline/check.h"
+#include "igaprep/pipeline/observer.h"
+#include "igaprep/pipeline/surfaces.h"
+#include "igaprep/pipeline/volume.h"
+
+namespace igaprep::pipeline {
+
+// Folded sample cells above this share of the blocks' face cells say the
+// samples, not the fit's resolution, make the model fail. Counted against a
+// face's cells, not a block's: folds lie in sheets (along T1, where
+// streamlines tear), so their count grows like a face's cells when the
+// sampling is finer (torus_genus3: 0.34 % at 6 and 0.33 % at 9 elements per
+// direction; the propeller 6.2 % at 4 and 11 % at 8; the pelvis 31 % at 6).
+constexpr double kRetryFoldedShare = 0.01;
+
+struct FitRetryDecision {
+  bool retry = false;
+  int elements = 0;    // per direction for the next attempt (when retry)
+  std::string reason;  // why or why not, one clause for the run's summary
+};
+
+// Inputs: the check of the attempt just made, its sampled blocks, the
+// elements per direction it used, the case's settings.
+FitRetryDecision decide_fit_retry(const Check& check, const param::VolumeParam& vp, int elements,
+                                  const CaseFitRetry& settings);
+
+// Elements of a check not certified positive (degenerate ones count unless
+// the check allows them).
+long uncertified_elements(const Check& check);
+
+// Whether attempt a is better than b: a passed check first, then fewer
+// elements not certified positive, then the smaller largest excess of a
+// fidelity or volume figure over its limit.
+bool better_attempt(const Check& a, const Check& b);
+
+struct FitAttempt {
+  Case settings;     // the case with the kept attempt's elements per direction
+  Fit fit;
+  Check check;
+  int attempts = 0;  // fits made, the kept one among them
+};
+
+// The param, fit and check stages; then again with more elements per
+// direction while decide_fit_retry says so and each finer attempt is better
+// than the best so far. Each decision after a failed check is a "retry"
+// summary line (none when the first check passes). Output: the best attempt.
+FitAttempt fit_and_check(const Case& c, const Surfaces& surfaces, const Decomposition& d, Observer& observer);
+
+}  // namespace igaprep::pipeline

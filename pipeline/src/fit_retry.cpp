@@ -1,0 +1,126 @@
+#include "igaprep/pipeline/fit_retry.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "igaprep/core/text.h"
+
+namespace igaprep::pipeline {
+
+namespace {
+
+// The failed criteria, comma separated; `only_resolution`: each is one a
+// finer fit can change (not conformity, not watertightness).
+std::string failed_criteria(const iga_check::CheckReport& r, bool* only_resolution) {
+  std::string names;
+  *only_resolution = true;
+  for (const iga_check::Criterion& c : r.criteria) {
+    if (c.passed) continue;
+    names += (names.empty() ? "" : ", ") + c.name;
+    if (c.name != "jacobian" && c.name != "fidelity" && c.name != "volume") *only_resolution = false;
+  }
+  return names;
+}
+
+// Folded sample cells per cell of a block's face (kRetryFoldedShare).
+double folded_share(const param::VolumeParam& vp) {
+  const double m = static_cast<double>(vp.params.size());
+  const double face_cells = static_cast<double>(vp.blocks.size()) * (m - 1.0) * (m - 1.0);
+  return face_cells > 0.0 ? vp.folded_cells / face_cells : 0.0;
+}
+
+// The largest |value| / limit of the fidelity and volume criteria.
+double largest_excess(const iga_check::CheckReport& r) {
+  double worst = 0.0;
+  for (const iga_check::Criterion& c : r.criteria)
+    if ((c.name == "fidelity" || c.name == "volume") && c.checked && c.limit > 0.0)
+      worst = std::max(worst, std::abs(c.value) / c.limit);
+  return worst;
+}
+
+}  // namespace
+
+FitRetryDecision decide_fit_retry(const Check& check, const param::VolumeParam& vp, int elements,
+                                  const CaseFitRetry& settings) {
+  FitRetryDecision d;
+  if (check.report.passed) {
+    d.reason = "the check passed";
+    return d;
+  }
+  bool only_resolution = false;
+  const std::string failed = failed_criteria(check.report, &only_resolution);
+  if (!only_resolution) {
+    d.reason = "the check failed on " + failed + ", which a finer fit does not change";
+    return d;
+  }
+  if (settings.max_elements <= elements) {
+    d.reason = text("the fit has the most elements per direction allowed ('fit.max_elements' %d)",
+                    settings.max_elements);
+    return d;
+  }
+  const double share = folded_share(vp);
+  if (share > kRetryFoldedShare) {
+    d.reason = text("the blocks' folded sample cells are %.2f %% of their face cells (more than %.1f %%): a finer fit "
+                    "would follow the folds",
+                    100.0 * share, 100.0 * kRetryFoldedShare);
+    return d;
+  }
+  const int next = std::min(settings.max_elements, std::max(elements + 1, (3 * elements + 1) / 2));
+  const long long model_elements = static_cast<long long>(vp.blocks.size()) * next * next * next;
+  if (model_elements > settings.max_model_elements) {
+    d.reason = text("%d elements per direction would make %lld elements, more than 'fit.max_model_elements' %lld",
+                    next, model_elements, settings.max_model_elements);
+    return d;
+  }
+  d.retry = true;
+  d.elements = next;
+  d.reason = text("the check failed on %s with %d elements per direction and the blocks' folded sample cells are "
+                  "%.2f %% of their face cells",
+                  failed.c_str(), elements, 100.0 * share);
+  return d;
+}
+
+long uncertified_elements(const Check& check) {
+  const CheckFigures& f = check.figures;
+  return f.negative + f.undecided + (check.report.allow_degenerate ? 0 : f.degenerate);
+}
+
+bool better_attempt(const Check& a, const Check& b) {
+  if (a.report.passed != b.report.passed) return a.report.passed;
+  const long ua = uncertified_elements(a), ub = uncertified_elements(b);
+  if (ua != ub) return ua < ub;
+  return largest_excess(a.report) < largest_excess(b.report);
+}
+
+FitAttempt fit_and_check(const Case& c, const Surfaces& surfaces, const Decomposition& d, Observer& observer) {
+  FitAttempt best;
+  Case next = c;
+  auto say = [&](const std::string& line) { observer.stage_finished({"retry", 0.0, line, {}}); };
+  for (;;) {
+    const param::VolumeParam vp = param_stage(next, surfaces, d, observer);
+    Fit fit = fit_stage(next, surfaces, d, vp, observer);
+    Check check = check_stage(fit.model, surfaces.inputs, next.check, observer);
+    ++best.attempts;
+    if (best.attempts > 1 && !better_attempt(check, best.check)) {
+      say(text("kept the fit with %d elements per direction: the one with %d is not better (%ld against %ld "
+               "elements not certified positive)",
+               best.settings.fit.elements, next.fit.elements, uncertified_elements(check),
+               uncertified_elements(best.check)));
+      return best;
+    }
+    best.settings = next;
+    best.fit = std::move(fit);
+    best.check = std::move(check);
+    const FitRetryDecision decision = decide_fit_retry(best.check, vp, next.fit.elements, c.fit_retry);
+    if (!decision.retry) {
+      if (!best.check.report.passed) say("no finer fit: " + decision.reason);
+      return best;
+    }
+    say(decision.reason + text(": the blocks are sampled and fitted again with %d elements per direction "
+                               "('fit.max_elements' %d)",
+                               decision.elements, c.fit_retry.max_elements));
+    next.fit.elements = decision.elements;
+  }
+}
+
+}  // namespace igaprep::pipeline

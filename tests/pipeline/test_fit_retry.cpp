@@ -1,0 +1,149 @@
+// A finer fit where the check fails for want of resolution (fit_retry.h):
+// when a retry is made and when not, which attempt is kept, the case keys,
+// and a run that refits sphere2 until its element cap.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "igaprep/pipeline/case.h"
+#include "igaprep/pipeline/fit_retry.h"
+#include "pipeline_runs.h"
+
+namespace {
+
+using igaprep::iga_check::Criterion;
+using igaprep::pipeline::Case;
+using igaprep::pipeline::CaseFitRetry;
+using igaprep::pipeline::Check;
+using igaprep::pipeline::decide_fit_retry;
+using igaprep::pipeline::better_attempt;
+using igaprep::param::VolumeParam;
+
+// A check whose criteria failed as named ("" passes every one): fidelity
+// and volume at `excess` times their limits when they fail.
+Check check_failing(const std::vector<std::string>& failed, long negative = 0, double excess = 2.0) {
+  Check c;
+  for (const char* name : {"jacobian", "conformity", "watertight", "fidelity", "volume"}) {
+    Criterion k;
+    k.name = name;
+    k.passed = std::find(failed.begin(), failed.end(), name) == failed.end();
+    k.limit = 0.005;
+    k.value = k.passed ? 0.001 : excess * k.limit;
+    c.report.criteria.push_back(k);
+  }
+  c.report.passed = failed.empty();
+  c.figures.negative = negative;
+  return c;
+}
+
+// `blocks` blocks sampled at 13 parameters (12^3 cells each), `folded` of their cells folded.
+VolumeParam sampled(int blocks, int folded) {
+  VolumeParam vp;
+  vp.params.assign(13, 0.0);
+  vp.blocks.resize(static_cast<std::size_t>(blocks));
+  vp.folded_cells = folded;
+  return vp;
+}
+
+TEST(FitRetry, AResolutionFailureWithSoundSamplesIsRefittedOneAndAHalfTimesFiner) {
+  const CaseFitRetry settings;  // up to 12 per direction, 200,000 elements
+  const auto d = decide_fit_retry(check_failing({"jacobian", "fidelity"}, 1), sampled(168, 148), 6, settings);
+  EXPECT_TRUE(d.retry) << d.reason;
+  EXPECT_EQ(d.elements, 9);
+  EXPECT_NE(d.reason.find("jacobian, fidelity"), std::string::npos) << d.reason;
+  // 9 -> 14 is capped at 12; 4 -> 6; 1 -> 2 (never fewer than one more).
+  EXPECT_EQ(decide_fit_retry(check_failing({"volume"}), sampled(100, 0), 9, settings).elements, 12);
+  EXPECT_EQ(decide_fit_retry(check_failing({"volume"}), sampled(100, 0), 4, settings).elements, 6);
+  EXPECT_EQ(decide_fit_retry(check_failing({"fidelity"}), sampled(10, 0), 1, settings).elements, 2);
+}
+
+TEST(FitRetry, NoRetryWhenItCannotHelpOrIsNotAllowed) {
+  const CaseFitRetry settings;
+  // A passed check.
+  EXPECT_FALSE(decide_fit_retry(check_failing({}), sampled(10, 0), 6, settings).retry);
+  // Folded samples: the propeller's 2,337 folded cells in 260 blocks of 144
+  // face cells each (6.2 %).
+  const auto folded = decide_fit_retry(check_failing({"jacobian"}, 128), sampled(260, 2337), 6, settings);
+  EXPECT_FALSE(folded.retry);
+  EXPECT_NE(folded.reason.find("folded"), std::string::npos) << folded.reason;
+  // Up to 1 % a retry is made: 374.4 of those face cells.
+  EXPECT_TRUE(decide_fit_retry(check_failing({"jacobian"}, 1), sampled(260, 374), 6, settings).retry);
+  EXPECT_FALSE(decide_fit_retry(check_failing({"jacobian"}, 1), sampled(260, 375), 6, settings).retry);
+  // Conformity is not a matter of resolution.
+  const auto conformity = decide_fit_retry(check_failing({"conformity", "fidelity"}), sampled(10, 0), 6, settings);
+  EXPECT_FALSE(conformity.retry);
+  EXPECT_NE(conformity.reason.find("conformity"), std::string::npos) << conformity.reason;
+  // The caps: per direction, and the finer model's elements (300 x 9^3 = 218,700).
+  EXPECT_FALSE(decide_fit_retry(check_failing({"fidelity"}), sampled(10, 0), 12, settings).retry);
+  const auto big = decide_fit_retry(check_failing({"fidelity"}), sampled(300, 0), 6, settings);
+  EXPECT_FALSE(big.retry);
+  EXPECT_NE(big.reason.find("218700"), std::string::npos) << big.reason;
+  EXPECT_TRUE(decide_fit_retry(check_failing({"fidelity"}), sampled(274, 0), 6, settings).retry);  // 199,746
+}
+
+TEST(FitRetry, ABetterAttemptPassesThenHasFewerUncertifiedElementsThenASmallerExcess) {
+  EXPECT_TRUE(better_attempt(check_failing({}), check_failing({"fidelity"}, 0, 1.01)));
+  EXPECT_FALSE(better_attempt(check_failing({"fidelity"}, 0, 1.01), check_failing({})));
+  EXPECT_TRUE(better_attempt(check_failing({"jacobian", "fidelity"}, 1, 3.0), check_failing({"jacobian"}, 2, 1.0)));
+  EXPECT_TRUE(better_attempt(check_failing({"fidelity"}, 0, 1.5), check_failing({"fidelity"}, 0, 1.9)));
+  EXPECT_FALSE(better_attempt(check_failing({"fidelity"}, 0, 1.9), check_failing({"fidelity"}, 0, 1.9)));
+}
+
+// The keys: an explicit elements count is kept unless max_elements asks for
+// more; both are written back.
+TEST(FitRetry, CaseKeys) {
+  const std::string surfaces = R"({"surfaces": [")" + pipeline_test::models_dir() + R"(/torus3/outer.off"], )";
+  auto read = [&](const std::string& fit) {
+    return igaprep::pipeline::parse_case(surfaces + R"("fit": )" + fit + "}", pipeline_test::models_dir(), "t.json");
+  };
+  const Case by_default = read("{}");
+  EXPECT_EQ(by_default.fit.elements, 6);
+  EXPECT_EQ(by_default.fit_retry.max_elements, 12);
+  EXPECT_EQ(by_default.fit_retry.max_model_elements, 200000);
+  EXPECT_EQ(read(R"({"elements": 8})").fit_retry.max_elements, 8);
+  const Case both = read(R"({"elements": 4, "max_elements": 9, "max_model_elements": 5000})");
+  EXPECT_EQ(both.fit_retry.max_elements, 9);
+  EXPECT_EQ(both.fit_retry.max_model_elements, 5000);
+  const auto back = nlohmann::json::parse(igaprep::pipeline::case_json(both, "", true)).at("fit");
+  EXPECT_EQ(back.at("max_elements").get<int>(), 9);
+  EXPECT_EQ(back.at("max_model_elements").get<int>(), 5000);
+  EXPECT_THROW(read(R"({"max_elements": 33})"), igaprep::Error);
+  EXPECT_THROW(read(R"({"max_model_elements": 0})"), igaprep::Error);
+}
+
+// sphere2 at 1 element per direction misses its surfaces by 1.3 % of the
+// diagonal; with max_elements 3 the run fits it again at 2 and 3 (0.96 %,
+// then 0.78 %), each better, and keeps the last, saying why it stops.
+TEST(FitRetry, Sphere2IsRefittedUpToItsCapAndTheFinestIsKept) {
+  using pipeline_test::Recorder;
+  const Case c = pipeline_test::model_case(
+      "sphere2", R"({"fit": {"elements": 1, "max_elements": 3, "jacobian_target": 0}, "validation": {"enabled": false},
+                    "export": []})",
+      "fit_retry_sphere2");
+  Recorder rec;
+  const auto r = igaprep::pipeline::run(c, rec);
+  std::vector<std::string> retries;
+  int fits = 0;
+  for (const auto& s : rec.stages) {
+    if (s.stage == "retry") retries.push_back(s.headline);
+    if (s.stage == "fit") ++fits;
+  }
+  EXPECT_EQ(fits, 3);
+  ASSERT_EQ(retries.size(), 3u);
+  EXPECT_NE(retries[0].find("again with 2 elements"), std::string::npos) << retries[0];
+  EXPECT_NE(retries[1].find("again with 3 elements"), std::string::npos) << retries[1];
+  EXPECT_NE(retries[2].find("'fit.max_elements' 3"), std::string::npos) << retries[2];
+  EXPECT_FALSE(r.passed);
+  EXPECT_EQ(r.model.patches.at(0).count(0) - 3, 3) << "the model kept has 3 elements per direction";
+  double fidelity = 1.0;
+  for (const auto& [key, value] : r.report.pipeline->figures)
+    if (key == "fidelity_relative_outer") fidelity = value;
+  EXPECT_LT(fidelity, 0.0085);
+  EXPECT_GT(fidelity, 0.005);
+  const auto options = nlohmann::json::parse(r.model.provenance_inputs).at("options").at("fit");
+  EXPECT_EQ(options.at("elements").get<int>(), 3) << "the provenance gives the kept attempt's settings";
+}
+
+}  // namespace

@@ -66,6 +66,17 @@ FitRetryDecision decide_fit_retry(const Check& check, const param::VolumeParam& 
     return d;
   }
   const int next = std::min(settings.max_elements, std::max(elements + 1, (3 * elements + 1) / 2));
+  // Between samples a fit cuts T1 like chords, whose distance falls like the
+  // square of their length: a figure further over its limit than that
+  // would bring back is not worth the finer fit's time.
+  const double reach = (static_cast<double>(next) / elements) * (static_cast<double>(next) / elements);
+  const double excess = largest_excess(check.report);
+  if (excess > reach) {
+    d.reason = text("fidelity or volume is %.2f times its limit, and %d elements per direction would bring it to "
+                    "%.2f times at best (the distance falls like the square of the element size)",
+                    excess, next, excess / reach);
+    return d;
+  }
   const long long model_elements = static_cast<long long>(vp.blocks.size()) * next * next * next;
   if (model_elements > settings.max_model_elements) {
     d.reason = text("%d elements per direction would make %lld elements, more than 'fit.max_model_elements' %lld",

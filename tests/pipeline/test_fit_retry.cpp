@@ -54,7 +54,7 @@ TEST(FitRetry, AResolutionFailureWithSoundSamplesIsRefittedOneAndAHalfTimesFiner
   EXPECT_EQ(d.elements, 9);
   EXPECT_NE(d.reason.find("jacobian, fidelity"), std::string::npos) << d.reason;
   // 9 -> 14 is capped at 12; 4 -> 6; 1 -> 2 (never fewer than one more).
-  EXPECT_EQ(decide_fit_retry(check_failing({"volume"}), sampled(100, 0), 9, settings).elements, 12);
+  EXPECT_EQ(decide_fit_retry(check_failing({"volume"}, 0, 1.5), sampled(100, 0), 9, settings).elements, 12);
   EXPECT_EQ(decide_fit_retry(check_failing({"volume"}), sampled(100, 0), 4, settings).elements, 6);
   EXPECT_EQ(decide_fit_retry(check_failing({"fidelity"}), sampled(10, 0), 1, settings).elements, 2);
 }
@@ -71,6 +71,13 @@ TEST(FitRetry, NoRetryWhenItCannotHelpOrIsNotAllowed) {
   // Up to 1 % a retry is made: 374.4 of those face cells.
   EXPECT_TRUE(decide_fit_retry(check_failing({"jacobian"}, 1), sampled(260, 374), 6, settings).retry);
   EXPECT_FALSE(decide_fit_retry(check_failing({"jacobian"}, 1), sampled(260, 375), 6, settings).retry);
+  // Fidelity out of reach: the kitten's 1.439 % (2.88 times the limit) at 6
+  // would be 1.28 times at 9; torus_genus3's 0.830 % (1.66 times) 0.74.
+  const auto far = decide_fit_retry(check_failing({"fidelity"}, 0, 2.878), sampled(98, 110), 6, settings);
+  EXPECT_FALSE(far.retry);
+  EXPECT_NE(far.reason.find("2.88 times its limit"), std::string::npos) << far.reason;
+  EXPECT_NE(far.reason.find("1.28 times at best"), std::string::npos) << far.reason;
+  EXPECT_TRUE(decide_fit_retry(check_failing({"fidelity"}, 1, 1.66), sampled(168, 148), 6, settings).retry);
   // Conformity is not a matter of resolution.
   const auto conformity = decide_fit_retry(check_failing({"conformity", "fidelity"}), sampled(10, 0), 6, settings);
   EXPECT_FALSE(conformity.retry);

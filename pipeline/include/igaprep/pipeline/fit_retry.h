@@ -31,6 +31,10 @@ struct FitRetryDecision {
   std::string reason;  // why or why not, one clause for the run's summary
 };
 
+// A retry is made when the check failed on the Jacobian, fidelity or volume
+// only, the samples are sound (kRetryFoldedShare), the caps allow the finer
+// count, and fidelity and volume are within reach of their limits: at most
+// (finer / present elements)^2 times them.
 // Inputs: the check of the attempt just made, its sampled blocks, the
 // elements per direction it used, the case's settings.
 FitRetryDecision decide_fit_retry(const Check& check, const param::VolumeParam& vp, int elements,

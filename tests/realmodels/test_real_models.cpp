@@ -1,0 +1,71 @@
+// Real meshes of ../shared/models run as a new user runs them: `igaprep run`
+// on a case that names only the surface, every key at its default (issue
+// 16). Each test asserts the exit code and the run's own figures
+// (report.json) against the check's criteria.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/cli_runner.h"
+
+namespace {
+
+using nlohmann::json;
+
+// The case a new user writes: the surface and nothing else.
+std::string surface_only_case(const std::string& dir, const std::string& file) {
+  const std::string path = dir + "/case.json";
+  std::ofstream(path) << json{{"surfaces", {file}}}.dump();
+  return path;
+}
+
+double figure(const json& report, const std::string& name) {
+  const json& f = report.at("pipeline").at("figures");
+  if (!f.contains(name)) {
+    ADD_FAILURE() << "no figure " << name;
+    return std::nan("");
+  }
+  return f.at(name).get<double>();
+}
+
+int count_lines(const std::string& text, const std::regex& line) {
+  return static_cast<int>(std::distance(std::sregex_iterator(text.begin(), text.end(), line), std::sregex_iterator()));
+}
+
+// torus_genus3 (genus 3): 6 elements per direction leave one negative
+// element and fidelity 0.830 %; the run fits it again at 9 and passes
+// (2026-12-06: min scaled Jacobian 0.336, fidelity 0.402 %, volume
+// -0.030 %, L2 rate 4.52; 248 s, 4.3 GB).
+TEST(RealModels, TorusGenus3PassesWithDefaultKeys) {
+  const std::string off = std::string(IGAPREP_SHARED_MODELS_DIR) + "/torus_genus3.off";
+  if (!std::filesystem::exists(off)) GTEST_SKIP() << "shared model " << off << " is absent";
+  const std::string dir = scratch_dir("torus_genus3");
+  const CliResult r = run_cli("run " + surface_only_case(dir, off) + " -o " + dir + "/out");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const json report = json::parse(read_all(dir + "/out/report.json"));
+  EXPECT_EQ(figure(report, "negative_elements"), 0.0);
+  EXPECT_EQ(figure(report, "undecided_elements"), 0.0);
+  EXPECT_EQ(figure(report, "degenerate_elements"), 0.0);
+  EXPECT_GE(figure(report, "min_scaled_jacobian"), 0.3);
+  EXPECT_LE(figure(report, "fidelity_relative_torus_genus3"), 0.005);
+  EXPECT_LE(std::abs(figure(report, "volume_difference_region_0")), 0.005);
+  EXPECT_EQ(figure(report, "unmatched_sides"), 0.0);
+  EXPECT_EQ(figure(report, "interface_gap_relative"), 0.0);
+  EXPECT_EQ(figure(report, "elements_per_direction"), 9.0) << "fitted again once, from 6";
+  const json& v = report.at("pipeline").at("validation");
+  ASSERT_TRUE(v.at("ran").get<bool>());
+  EXPECT_GE(v.at("l2_rate").get<double>(), 3.5);
+  // The cut it chose: written, and described (4 loops for genus 3, and their corners).
+  EXPECT_TRUE(std::filesystem::exists(dir + "/out/midsurface_loops.vtu"));
+  EXPECT_EQ(count_lines(r.out, std::regex(R"(\n\s+loop [0-9]+: [0-9]+ vertices)")), 4) << r.out;
+  EXPECT_EQ(count_lines(r.out, std::regex(R"(\n\s+corners of loop [0-9]+ \((hole|outer)\):)")), 4) << r.out;
+  EXPECT_NE(r.out.find("retry "), std::string::npos) << "the run says why it fitted again";
+}
+
+}  // namespace

@@ -65,7 +65,16 @@ FitRetryDecision decide_fit_retry(const Check& check, const param::VolumeParam& 
                     100.0 * share, 100.0 * kRetryFoldedShare);
     return d;
   }
-  const int next = std::min(settings.max_elements, std::max(elements + 1, (3 * elements + 1) / 2));
+  // 1.5 times as many, or as many as max_model_elements allows.
+  int next = std::min(settings.max_elements, std::max(elements + 1, (3 * elements + 1) / 2));
+  const auto blocks = static_cast<long long>(vp.blocks.size());
+  while (next > elements && blocks * next * next * next > settings.max_model_elements) --next;
+  if (next <= elements) {
+    const int more = elements + 1;
+    d.reason = text("%d elements per direction would make %lld elements, more than 'fit.max_model_elements' %lld",
+                    more, blocks * more * more * more, settings.max_model_elements);
+    return d;
+  }
   // Between samples a fit cuts T1 like chords, whose distance falls like the
   // square of their length: a figure further over its limit than that
   // would bring back is not worth the finer fit's time.
@@ -75,12 +84,6 @@ FitRetryDecision decide_fit_retry(const Check& check, const param::VolumeParam& 
     d.reason = text("fidelity or volume is %.2f times its limit, and %d elements per direction would bring it to "
                     "%.2f times at best (the distance falls like the square of the element size)",
                     excess, next, excess / reach);
-    return d;
-  }
-  const long long model_elements = static_cast<long long>(vp.blocks.size()) * next * next * next;
-  if (model_elements > settings.max_model_elements) {
-    d.reason = text("%d elements per direction would make %lld elements, more than 'fit.max_model_elements' %lld",
-                    next, model_elements, settings.max_model_elements);
     return d;
   }
   d.retry = true;

@@ -82,12 +82,14 @@ TEST(FitRetry, NoRetryWhenItCannotHelpOrIsNotAllowed) {
   const auto conformity = decide_fit_retry(check_failing({"conformity", "fidelity"}), sampled(10, 0), 6, settings);
   EXPECT_FALSE(conformity.retry);
   EXPECT_NE(conformity.reason.find("conformity"), std::string::npos) << conformity.reason;
-  // The caps: per direction, and the finer model's elements (300 x 9^3 = 218,700).
+  // The caps: per direction; and the finer model's elements: 300 blocks at
+  // 9 would make 218,700, so 8 is taken (153,600); from 8, 9 is too many.
   EXPECT_FALSE(decide_fit_retry(check_failing({"fidelity"}), sampled(10, 0), 12, settings).retry);
-  const auto big = decide_fit_retry(check_failing({"fidelity"}), sampled(300, 0), 6, settings);
+  EXPECT_EQ(decide_fit_retry(check_failing({"fidelity"}, 0, 1.5), sampled(300, 0), 6, settings).elements, 8);
+  const auto big = decide_fit_retry(check_failing({"fidelity"}, 0, 1.2), sampled(300, 0), 8, settings);
   EXPECT_FALSE(big.retry);
   EXPECT_NE(big.reason.find("218700"), std::string::npos) << big.reason;
-  EXPECT_TRUE(decide_fit_retry(check_failing({"fidelity"}), sampled(274, 0), 6, settings).retry);  // 199,746
+  EXPECT_EQ(decide_fit_retry(check_failing({"fidelity"}), sampled(274, 0), 6, settings).elements, 9);  // 199,746
 }
 
 TEST(FitRetry, ABetterAttemptPassesThenHasFewerUncertifiedElementsThenASmallerExcess) {

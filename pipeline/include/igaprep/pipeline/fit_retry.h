@@ -1,7 +1,8 @@
 #pragma once
 // A finer fit where the check fails for want of resolution: the blocks are
 // sampled and fitted again with about 1.5 times as many elements per
-// direction, as long as the samples themselves are sound. A fit of folded
+// direction (fewer where CaseFitRetry::max_model_elements allows no more),
+// as long as the samples themselves are sound. A fit of folded
 // samples only follows the folds more closely when it is finer (the
 // propeller at 4 and 8 elements per direction: 128 and 952 negative
 // elements), so a run whose sample cells are folded in more than a small

@@ -791,6 +791,29 @@ TEST(TraceColumn, CrossesAPlateauOfWInItsLastDirection) {
   EXPECT_LT(std::min({end.minCoeff(), 1.0 - end.maxCoeff()}), 1e-6);
 }
 
+// A discrete w with a minimum inside the solid (a bowl around the box's
+// centre): the streamline is caught there, and the error is bad input that
+// names the stage, the start and the case keys that change it (issue 16's
+// failure class "streamlines that do not reach T1"), not a failed check.
+TEST(TraceColumn, AStreamlineCaughtAtAnInteriorMinimumNamesTheKeysThatChangeIt) {
+  LinearField f;
+  const Eigen::Vector3d centre(0.5, 0.5, 0.5);
+  for (Eigen::Index v = 0; v < f.u.size(); ++v) f.u(v) = (f.mesh.V.row(v).transpose() - centre).squaredNorm();
+  f.grad = vertex_gradients(f.mesh.V, f.mesh.T, f.u);
+  const FieldProbe probe(f.mesh.V, f.mesh.T, f.topo, f.u, f.grad);
+  try {
+    trace_column(probe, Eigen::Vector3d(0.8, 0.3, 0.7), 0.01, nullptr, 0.0, 2000);
+    FAIL() << "the streamline cannot leave the bowl";
+  } catch (const igaprep::Error& e) {
+    EXPECT_EQ(e.kind(), igaprep::ErrorKind::BadInput) << e.what();
+    const std::string m = e.what();
+    EXPECT_NE(m.find("param: the streamline from (0.8 0.3 0.7)"), std::string::npos) << m;
+    EXPECT_NE(m.find("finds no exit through T1 within 2000 steps"), std::string::npos) << m;
+    EXPECT_NE(m.find("'tetmesh.max_volume'"), std::string::npos) << m;
+    EXPECT_NE(m.find("'midsurface.cut'"), std::string::npos) << m;
+  }
+}
+
 TEST(TraceColumn, TheLevelOfT1IsWhereTheColumnEnds) {
   // w = 0 on a band of vertices before T1, as inside the slivers TetGen
   // leaves against a concave part of T1 (all four vertices on T1): the

@@ -30,8 +30,10 @@ struct StreamlineColumn {
 // units), a tet near the start (or null), maximum number of steps. Output: the column, integrated with the
 // classical Runge-Kutta rule along the unit direction -g/|g| until it leaves H through
 // its outer boundary T1 (the last point is on T1, found by bisection).
-// Throws check_failed naming the start point when the gradient vanishes or
-// the step budget runs out.
+// Throws check_failed naming the start point when it lies outside H, and
+// bad_input naming the case keys that change it when the gradient vanishes
+// at the start or the step budget runs out (an extremum of the discrete w
+// inside the solid).
 // With stop_level > 0 the column ends at the first point where w <= stop_level.
 StreamlineColumn trace_column(const FieldProbe& probe, const Eigen::Vector3d& start, double step,
                               int* start_hint = nullptr, double stop_level = 0.0, int max_steps = 100000);

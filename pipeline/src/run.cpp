@@ -47,7 +47,8 @@ void add_reduce_figures(const ReduceFigures& r, iga_check::PipelineSection& p) {
 
 // The run's section of the report: figures in a fixed order (docs/check-report.md).
 iga_check::PipelineSection pipeline_section(const Case& c, const param::MidsurfaceResult& mid, const Fit& fit,
-                                            const CheckFigures& check, const std::optional<ReduceFigures>& reduce) {
+                                            int fit_attempts, const CheckFigures& check,
+                                            const std::optional<ReduceFigures>& reduce) {
   const spline::MultiPatch& mp = fit.model;
   iga_check::PipelineSection p;
   p.case_name = c.name;
@@ -64,6 +65,7 @@ iga_check::PipelineSection pipeline_section(const Case& c, const param::Midsurfa
   }
   add("degree", degree);
   add("elements_per_direction", elements_per_direction);  // of patch 0, direction u (before any knot insertion)
+  add("fit_attempts", fit_attempts);                       // fit_retry.h
   add("elements", static_cast<double>(check.elements));
   add("control_points", static_cast<double>(spline::control_point_count(mp)));
   add("interfaces", static_cast<double>(mp.interfaces.size()));
@@ -273,6 +275,7 @@ void run_stages(const Case& c, Observer& outer, OutputFolder* folder, RunResult&
   std::optional<ReduceFigures> reduced;
   Fit fit;
   Check check;
+  int fit_attempts = 1;
   if (c.reduce) {  // the reduction checks the reduced model; a finer fit is not tried
     fit = fit_stage(c, surfaces, d, param_stage(c, surfaces, d, observer), observer);
     fill_provenance(c, fit.model);
@@ -283,12 +286,13 @@ void run_stages(const Case& c, Observer& outer, OutputFolder* folder, RunResult&
   } else {
     FitAttempt kept = fit_and_check(c, surfaces, d, observer);
     fill_provenance(kept.settings, kept.fit.model);
+    fit_attempts = kept.attempts;
     fit = std::move(kept.fit);
     check = std::move(kept.check);
   }
   r.report = std::move(check.report);
   r.report.model = "model.h5";
-  r.report.pipeline = pipeline_section(c, mid, fit, check.figures, reduced);
+  r.report.pipeline = pipeline_section(c, mid, fit, fit_attempts, check.figures, reduced);
   iga_check::PipelineSection& p = *r.report.pipeline;
   r.model = std::move(fit.model);
   if (folder)

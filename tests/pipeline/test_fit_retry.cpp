@@ -146,9 +146,12 @@ TEST(FitRetry, Sphere2IsRefittedUpToItsCapAndTheFinestIsKept) {
   EXPECT_NE(retries[2].find("'fit.max_elements' 3"), std::string::npos) << retries[2];
   EXPECT_FALSE(r.passed);
   EXPECT_EQ(r.model.patches.at(0).count(0) - 3, 3) << "the model kept has 3 elements per direction";
-  double fidelity = 1.0;
-  for (const auto& [key, value] : r.report.pipeline->figures)
+  double fidelity = 1.0, attempts = 0.0;
+  for (const auto& [key, value] : r.report.pipeline->figures) {
     if (key == "fidelity_relative_outer") fidelity = value;
+    if (key == "fit_attempts") attempts = value;
+  }
+  EXPECT_EQ(attempts, 3.0);
   EXPECT_LT(fidelity, 0.0085);
   EXPECT_GT(fidelity, 0.005);
   const auto options = nlohmann::json::parse(r.model.provenance_inputs).at("options").at("fit");

@@ -58,6 +58,7 @@ TEST(RealModels, TorusGenus3PassesWithDefaultKeys) {
   EXPECT_EQ(figure(report, "unmatched_sides"), 0.0);
   EXPECT_EQ(figure(report, "interface_gap_relative"), 0.0);
   EXPECT_EQ(figure(report, "elements_per_direction"), 9.0) << "fitted again once, from 6";
+  EXPECT_EQ(figure(report, "fit_attempts"), 2.0);
   const json& v = report.at("pipeline").at("validation");
   ASSERT_TRUE(v.at("ran").get<bool>());
   EXPECT_GE(v.at("l2_rate").get<double>(), 3.5);

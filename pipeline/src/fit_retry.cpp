@@ -106,26 +106,24 @@ bool better_attempt(const Check& a, const Check& b) {
   return largest_excess(a.report) < largest_excess(b.report);
 }
 
-FitAttempt fit_and_check(const Case& c, const Surfaces& surfaces, const Decomposition& d, Observer& observer) {
+FitAttempt best_fit_attempt(const Case& c, const std::function<MadeAttempt(const Case&)>& make,
+                            const std::function<void(const std::string&)>& say) {
   FitAttempt best;
   Case next = c;
-  auto say = [&](const std::string& line) { observer.stage_finished({"retry", 0.0, line, {}}); };
   for (;;) {
-    const param::VolumeParam vp = param_stage(next, surfaces, d, observer);
-    Fit fit = fit_stage(next, surfaces, d, vp, observer);
-    Check check = check_stage(fit.model, surfaces.inputs, next.check, observer);
+    MadeAttempt made = make(next);
     ++best.attempts;
-    if (best.attempts > 1 && !better_attempt(check, best.check)) {
+    if (best.attempts > 1 && !better_attempt(made.check, best.check)) {
       say(text("kept the fit with %d elements per direction: the one with %d is not better (%ld against %ld "
                "elements not certified positive)",
-               best.settings.fit.elements, next.fit.elements, uncertified_elements(check),
+               best.settings.fit.elements, next.fit.elements, uncertified_elements(made.check),
                uncertified_elements(best.check)));
       return best;
     }
     best.settings = next;
-    best.fit = std::move(fit);
-    best.check = std::move(check);
-    const FitRetryDecision decision = decide_fit_retry(best.check, vp, next.fit.elements, c.fit_retry);
+    best.fit = std::move(made.fit);
+    best.check = std::move(made.check);
+    const FitRetryDecision decision = decide_fit_retry(best.check, made.vp, next.fit.elements, c.fit_retry);
     if (!decision.retry) {
       if (!best.check.report.passed) say("no finer fit: " + decision.reason);
       return best;
@@ -135,6 +133,17 @@ FitAttempt fit_and_check(const Case& c, const Surfaces& surfaces, const Decompos
                                decision.elements, c.fit_retry.max_elements));
     next.fit.elements = decision.elements;
   }
+}
+
+FitAttempt fit_and_check(const Case& c, const Surfaces& surfaces, const Decomposition& d, Observer& observer) {
+  auto make = [&](const Case& attempt) {
+    MadeAttempt m;
+    m.vp = param_stage(attempt, surfaces, d, observer);
+    m.fit = fit_stage(attempt, surfaces, d, m.vp, observer);
+    m.check = check_stage(m.fit.model, surfaces.inputs, attempt.check, observer);
+    return m;
+  };
+  return best_fit_attempt(c, make, [&](const std::string& line) { observer.stage_finished({"retry", 0.0, line, {}}); });
 }
 
 }  // namespace igaprep::pipeline

@@ -3,7 +3,10 @@
 // and a run that refits sphere2 until its element cap.
 #include <gtest/gtest.h>
 
+#include <functional>
+#include <map>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -98,6 +101,53 @@ TEST(FitRetry, ABetterAttemptPassesThenHasFewerUncertifiedElementsThenASmallerEx
   EXPECT_TRUE(better_attempt(check_failing({"jacobian", "fidelity"}, 1, 3.0), check_failing({"jacobian"}, 2, 1.0)));
   EXPECT_TRUE(better_attempt(check_failing({"fidelity"}, 0, 1.5), check_failing({"fidelity"}, 0, 1.9)));
   EXPECT_FALSE(better_attempt(check_failing({"fidelity"}, 0, 1.9), check_failing({"fidelity"}, 0, 1.9)));
+}
+
+// The attempt loop with made-up attempts: the check each element count gets.
+struct FakeAttempts {
+  std::map<int, Check> checks;
+  std::vector<int> made;
+  igaprep::pipeline::MadeAttempt operator()(const Case& c) {
+    made.push_back(c.fit.elements);
+    igaprep::pipeline::MadeAttempt m;
+    m.check = checks.at(c.fit.elements);
+    m.vp = sampled(100, 0);
+    return m;
+  }
+};
+
+TEST(FitRetry, AFinerAttemptThatIsNotBetterIsDroppedAndTheLoopStops) {
+  Case c;  // 6 elements, up to 12
+  FakeAttempts fake;
+  fake.checks[6] = check_failing({"jacobian"}, 1, 0.5);
+  fake.checks[9] = check_failing({"jacobian", "fidelity"}, 3, 1.2);
+  std::vector<std::string> said;
+  const auto kept = igaprep::pipeline::best_fit_attempt(
+      c, std::ref(fake), [&](const std::string& line) { said.push_back(line); });
+  EXPECT_EQ(fake.made, (std::vector<int>{6, 9}));
+  EXPECT_EQ(kept.attempts, 2);
+  EXPECT_EQ(kept.settings.fit.elements, 6);
+  EXPECT_EQ(kept.check.figures.negative, 1);
+  ASSERT_EQ(said.size(), 2u);
+  EXPECT_NE(said[1].find("kept the fit with 6 elements per direction: the one with 9 is not better (3 against 1"),
+            std::string::npos)
+      << said[1];
+}
+
+TEST(FitRetry, TheLoopGoesOnWhileEachAttemptIsBetterAndStopsAtAPass) {
+  Case c;
+  FakeAttempts fake;
+  fake.checks[6] = check_failing({"fidelity"}, 0, 1.66);
+  fake.checks[9] = check_failing({"fidelity"}, 0, 1.2);
+  fake.checks[12] = check_failing({});
+  std::vector<std::string> said;
+  const auto kept = igaprep::pipeline::best_fit_attempt(
+      c, std::ref(fake), [&](const std::string& line) { said.push_back(line); });
+  EXPECT_EQ(fake.made, (std::vector<int>{6, 9, 12}));
+  EXPECT_EQ(kept.attempts, 3);
+  EXPECT_EQ(kept.settings.fit.elements, 12);
+  EXPECT_TRUE(kept.check.report.passed);
+  EXPECT_EQ(said.size(), 2u) << "a line per refit, none after the pass";
 }
 
 // The keys: an explicit elements count is kept unless max_elements asks for

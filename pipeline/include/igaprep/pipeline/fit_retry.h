@@ -7,6 +7,7 @@
 // propeller at 4 and 8 elements per direction: 128 and 952 negative
 // elements), so a run whose sample cells are folded in more than a small
 // share is not refitted (docs/decomposition.md, "A finer fit").
+#include <functional>
 #include <string>
 
 #include "igaprep/param/volume_param.h"
@@ -56,6 +57,20 @@ struct FitAttempt {
   Check check;
   int attempts = 0;  // fits made, the kept one among them
 };
+
+// One attempt as the loop sees it: the fit, its check and the sampled
+// blocks it was fitted to.
+struct MadeAttempt {
+  Fit fit;
+  Check check;
+  param::VolumeParam vp;
+};
+
+// The loop of fit_and_check for any way of making an attempt (the tests
+// give their own): make(case) makes one with the case's elements per
+// direction; say(line) hears each decision after a failed check.
+FitAttempt best_fit_attempt(const Case& c, const std::function<MadeAttempt(const Case&)>& make,
+                            const std::function<void(const std::string&)>& say);
 
 // The param, fit and check stages; then again with more elements per
 // direction while decide_fit_retry says so and each finer attempt is better

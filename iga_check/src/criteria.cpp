@@ -153,4 +153,11 @@ Criterion volume_criterion(const TopologyReport& t, const std::vector<std::strin
   return c;
 }
 
+std::string failed_criterion_names(const std::vector<Criterion>& criteria) {
+  std::string names;
+  for (const Criterion& c : criteria)
+    if (!c.passed) names += (names.empty() ? "" : ", ") + c.name;
+  return names;
+}
+
 }  // namespace igaprep::iga_check

@@ -4,22 +4,18 @@
 #include <cmath>
 
 #include "igaprep/core/text.h"
+#include "igaprep/iga_check/criteria.h"
 
 namespace igaprep::pipeline {
 
 namespace {
 
-// The failed criteria, comma separated; `only_resolution`: each is one a
-// finer fit can change (not conformity, not watertightness).
-std::string failed_criteria(const iga_check::CheckReport& r, bool* only_resolution) {
-  std::string names;
-  *only_resolution = true;
-  for (const iga_check::Criterion& c : r.criteria) {
-    if (c.passed) continue;
-    names += (names.empty() ? "" : ", ") + c.name;
-    if (c.name != "jacobian" && c.name != "fidelity" && c.name != "volume") *only_resolution = false;
-  }
-  return names;
+// Whether every failed criterion is one a finer fit can change (not
+// conformity, not watertightness).
+bool only_resolution_failed(const iga_check::CheckReport& r) {
+  return std::all_of(r.criteria.begin(), r.criteria.end(), [](const iga_check::Criterion& c) {
+    return c.passed || c.name == "jacobian" || c.name == "fidelity" || c.name == "volume";
+  });
 }
 
 // Folded sample cells per cell of a block's face (kRetryFoldedShare).
@@ -47,9 +43,8 @@ FitRetryDecision decide_fit_retry(const Check& check, const param::VolumeParam& 
     d.reason = "the check passed";
     return d;
   }
-  bool only_resolution = false;
-  const std::string failed = failed_criteria(check.report, &only_resolution);
-  if (!only_resolution) {
+  const std::string failed = iga_check::failed_criterion_names(check.report.criteria);
+  if (!only_resolution_failed(check.report)) {
     d.reason = "the check failed on " + failed + ", which a finer fit does not change";
     return d;
   }

@@ -130,10 +130,8 @@ void run_tspline(const Case& c, const Surfaces& surfaces, Observer& observer, Ou
 
 std::string verdict_of(const iga_check::CheckReport& report, const iga_check::PipelineSection& p,
                        long tspline_uncertified) {
-  std::string failed;
-  for (const iga_check::Criterion& c : report.criteria)
-    if (!c.passed) failed += (failed.empty() ? "" : ", ") + c.name;
-  std::string verdict = report.passed ? "check passed" : "check FAILED (" + failed + ")";
+  std::string verdict =
+      report.passed ? "check passed" : "check FAILED (" + iga_check::failed_criterion_names(report.criteria) + ")";
   if (tspline_uncertified > 0) verdict += text("; T-spline: %ld elements NOT certified", tspline_uncertified);
   if (!p.validation)
     verdict += "; validation off";

@@ -41,7 +41,7 @@ Check check_failing(const std::vector<std::string>& failed, long negative = 0, d
   return c;
 }
 
-// `blocks` blocks sampled at 13 parameters (12^3 cells each), `folded` of their cells folded.
+// `blocks` blocks sampled at 13 parameters (12^2 cells a face), `folded` of their cells folded.
 VolumeParam sampled(int blocks, int folded) {
   VolumeParam vp;
   vp.params.assign(13, 0.0);

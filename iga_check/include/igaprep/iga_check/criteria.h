@@ -45,6 +45,9 @@ Criterion fidelity_criterion(const std::vector<SurfaceFidelity>& fidelity, const
 Criterion volume_criterion(const TopologyReport& t, const std::vector<std::string>& labels, int materials,
                            double limit);
 
+// The names of the criteria that failed, comma separated ("" when none).
+std::string failed_criterion_names(const std::vector<Criterion>& criteria);
+
 // Most findings a criterion lists; the last line then says how many more.
 inline constexpr int kMaxFindings = 12;
 

@@ -1,5 +1,6 @@
 #include "igaprep/param/grid_smoothing.h"
 
+#include <algorithm>
 #include <string>
 
 #include <Eigen/Dense>
@@ -41,6 +42,15 @@ void check_inputs(std::size_t points, std::size_t expected, const std::vector<do
   if (degree < 2) throw bad_input(std::string(what) + ": degree must be at least 2, got " + std::to_string(degree));
 }
 
+// How much of its sample a side keeps at parameter t: (1 - d / share)^2 at
+// distance d below share from a kept end (ends: t = 0, t = 1), else none.
+double end_weight(double t, const std::array<bool, 2>& ends, double share) {
+  const double d = std::min(ends[0] ? t : 1.0, ends[1] ? 1.0 - t : 1.0);
+  if (!(d < share)) return 0.0;
+  const double r = 1.0 - d / share;
+  return r * r;
+}
+
 }  // namespace
 
 std::vector<Eigen::Vector3d> smooth_polyline(const std::vector<Eigen::Vector3d>& points,
@@ -67,22 +77,30 @@ std::vector<Eigen::Vector3d> smooth_polyline(const std::vector<Eigen::Vector3d>&
 }
 
 std::vector<Eigen::Vector3d> smooth_grid(const std::vector<Eigen::Vector3d>& grid, const std::vector<double>& params,
-                                         int degree) {
+                                         int degree, const KeptCorners& kept) {
   check_inputs(grid.size(), params.size() * params.size(), params, degree, "smooth_grid");
+  if (!(kept.end_share >= 0.0 && kept.end_share <= 0.5))
+    throw bad_input("smooth_grid: end_share must be between 0 and 0.5, got " + std::to_string(kept.end_share));
   const int m = static_cast<int>(params.size());
   auto at = [&](int i, int j) { return static_cast<std::size_t>(i + m * j); };
   std::vector<Eigen::Vector3d> out(grid.size());
-  // The four sides, each from its own samples in increasing index order.
-  auto side = [&](auto index) {
+  // The four sides, each from its own samples in increasing index order,
+  // with the flags of the corners at its start and its end.
+  auto side = [&](auto index, int start, int end) {
     std::vector<Eigen::Vector3d> s(static_cast<std::size_t>(m));
     for (int k = 0; k < m; ++k) s[static_cast<std::size_t>(k)] = grid[index(k)];
-    s = smooth_polyline(s, params, degree);
-    for (int k = 0; k < m; ++k) out[index(k)] = s[static_cast<std::size_t>(k)];
+    const std::vector<Eigen::Vector3d> smooth = smooth_polyline(s, params, degree);
+    const std::array<bool, 2> ends{{kept.corners[static_cast<std::size_t>(start)], kept.corners[static_cast<std::size_t>(end)]}};
+    for (int k = 0; k < m; ++k) {
+      const double w = end_weight(params[static_cast<std::size_t>(k)], ends, kept.end_share);
+      out[index(k)] = w == 0.0 ? smooth[static_cast<std::size_t>(k)]
+                               : Eigen::Vector3d((1.0 - w) * smooth[static_cast<std::size_t>(k)] + w * s[static_cast<std::size_t>(k)]);
+    }
   };
-  side([&](int k) { return at(k, 0); });
-  side([&](int k) { return at(k, m - 1); });
-  side([&](int k) { return at(0, k); });
-  side([&](int k) { return at(m - 1, k); });
+  side([&](int k) { return at(k, 0); }, 0, 1);
+  side([&](int k) { return at(k, m - 1); }, 2, 3);
+  side([&](int k) { return at(0, k); }, 0, 2);
+  side([&](int k) { return at(m - 1, k); }, 1, 3);
   // Coons patch of the smoothed sides: exact on the sides.
   auto coons = [&](int i, int j) {
     const double s = params[static_cast<std::size_t>(i)], t = params[static_cast<std::size_t>(j)];

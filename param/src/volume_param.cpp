@@ -237,6 +237,20 @@ bool within_band(VolumeContext& ctx, const Grid2& points, double level) {
   return true;
 }
 
+// Which corners of rectangle R (grid corners (0, 0), (m - 1, 0), (0, m - 1),
+// (m - 1, m - 1)) lie on the domain's boundary, kept within `share`
+// (VolumeParamOptions::corner_share).
+KeptCorners boundary_corners_of(const BaseLayout& layout, const Eigen::Vector4d& R, double share) {
+  const double eps = 1e-9 * (layout.domain.width + layout.domain.height);
+  const std::array<Eigen::Vector2d, 4> corners{{{R(0), R(1)}, {R(2), R(1)}, {R(0), R(3)}, {R(2), R(3)}}};
+  KeptCorners kept;
+  kept.end_share = share;
+  for (std::size_t c = 0; c < 4; ++c)
+    for (const DomainEdge& e : layout.domain_edges)
+      if (detail::distance_to_segment<2>(corners[c], e.a, e.b) < eps) kept.corners[c] = true;
+  return kept;
+}
+
 // M and the lids of every rectangle smoothed onto polynomials, unless a
 // smoothed surface leaves its band of w: M the core (w >= w0), the lids the
 // layer between T(n+1) and Tn (ctx.outer_band()). On a solid a few tets
@@ -245,8 +259,10 @@ bool within_band(VolumeContext& ctx, const Grid2& points, double level) {
 void smooth_rectangles(VolumeContext& ctx, std::vector<RectGrid>& rect) {
   const int degree = ctx.options.surface_degree;
   std::vector<RectGrid> smooth = rect;
-  for (RectGrid& g : smooth) {
-    for (Grid2* s : {&g.base, &g.top, &g.bottom}) *s = smooth_grid(*s, ctx.params, degree);
+  for (std::size_t r = 0; r < smooth.size(); ++r) {
+    RectGrid& g = smooth[r];
+    const KeptCorners kept = boundary_corners_of(ctx.layout, ctx.layout.rectangles[r], ctx.options.corner_share);
+    for (Grid2* s : {&g.base, &g.top, &g.bottom}) *s = smooth_grid(*s, ctx.params, degree, kept);
     if (!within_band(ctx, g.base, ctx.w0) || !within_band(ctx, g.top, ctx.outer_band()) ||
         !within_band(ctx, g.bottom, ctx.outer_band()))
       return;

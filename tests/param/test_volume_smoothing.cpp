@@ -8,6 +8,8 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -232,8 +234,11 @@ TEST(GridSmoothing, NeighbouringGridsGetTheSameSharedSide) {
     ASSERT_EQ(A[(m - 1) + m * k], B[0 + m * k]);
     ASSERT_EQ(A[k + m * (m - 1)], C[k]);
   }
-  for (int degree : {3, 6}) {
-    const auto a = smooth_grid(A, t, degree), b = smooth_grid(B, t, degree), c = smooth_grid(C, t, degree);
+  // Kept: A's corners (0, 0) and (1, 0), the latter B's first corner too;
+  // flagged alike wherever grids share them.
+  const KeptCorners none, kept_a{{{true, true, false, false}}, 0.15}, kept_b{{{true, false, false, false}}, 0.15};
+  for (const auto& [degree, ka, kb] : {std::tuple{3, none, none}, std::tuple{6, none, none}, std::tuple{6, kept_a, kept_b}}) {
+    const auto a = smooth_grid(A, t, degree, ka), b = smooth_grid(B, t, degree, kb), c = smooth_grid(C, t, degree, none);
     double moved = 0.0;
     for (std::size_t k = 0; k < m; ++k) {
       for (int x = 0; x < 3; ++x) {
@@ -376,6 +381,39 @@ TEST(GridSmoothing, FitsAreLeastSquares) {
         worst = std::max(worst, (g[at(i, j)] - coons(i, j) - gfit.row(row).transpose()).norm());
     EXPECT_LT(worst, 1e-11) << "grid, degree " << degree;
   }
+}
+
+// KeptCorners: within end_share of a side's parameters from a kept corner the side is
+// (1 - w) smoothed + w sampled, w = (1 - d / share)^2 at distance d; farther
+// in it is the plain smoothed side bit for bit. ring2's lid, sampled, bends
+// at its outer layout corners within two samples (its height dips by 0.0025
+// at the first sample), which the plain polynomial irons out, opening the
+// corner from 102 to 130 degrees.
+TEST(GridSmoothing, EndShareKeepsTheSamplesNearTheCorners) {
+  const auto t = sample_params();
+  const std::size_t m = t.size();
+  const double share = 0.15;
+  const Surface f = [](double s, double u) { return Eigen::Vector3d(s, u, 0.1 * std::sin(2.0 * s + u)); };
+  auto G = sample_grid(f, t);
+  G[1](2) -= 0.01;  // a bend at the corner (0, 0), along the side j = 0
+  G[2](2) -= 0.005;
+  const auto plain = smooth_grid(G, t, 6), kept = smooth_grid(G, t, 6, {{{true, false, false, false}}, share});
+  for (std::size_t k = 0; k < m; ++k) {
+    const double d = t[k];  // only the corner (0, 0) is kept
+    if (d >= share) {
+      EXPECT_EQ(kept[k], plain[k]) << "side j = 0, sample " << k;
+      continue;
+    }
+    const double w = (1.0 - d / share) * (1.0 - d / share);
+    EXPECT_LE((kept[k] - ((1.0 - w) * plain[k] + w * G[k])).norm(), 1e-15) << "side j = 0, sample " << k;
+  }
+  // The bend survives: the first sample along the side keeps most of its dip.
+  EXPECT_LT(kept[1](2) - f(t[1], 0.0)(2), -0.005);
+  EXPECT_GT(plain[1](2) - f(t[1], 0.0)(2), -0.004);
+  // The other end of the side, not kept, is smoothed as without.
+  EXPECT_EQ(kept[m - 2], plain[m - 2]);
+  EXPECT_THROW(smooth_grid(G, t, 6, {{{true, false, false, false}}, 0.6}), igaprep::Error);
+  EXPECT_THROW(smooth_grid(G, t, 6, {{{true, false, false, false}}, -0.1}), igaprep::Error);
 }
 
 TEST(GridSmoothing, RejectsBadInput) {

@@ -86,6 +86,7 @@ TEST(Case, BadKeysAreRefusedByName) {
       {R"(, "decomposition": {"smoothing": -1})", "decomposition.smoothing"},
       {R"(, "decomposition": {"surface_degree": 2.5})", "decomposition.surface_degree"},
       {R"(, "decomposition": {"surface_degree": 13})", "decomposition.surface_degree"},
+      {R"(, "decomposition": {"corner_share": 0.6})", "'decomposition.corner_share' must be a number in"},
       {R"(, "decomposition": {"sliding_uv": "yes"})", "'decomposition.sliding_uv' must be true or false"},
       {R"(, "decomposition": {"max_aspect": 0.5})", "'decomposition.max_aspect' must be 0 (no cuts) or at least 1"},
       {R"(, "decomposition": {"max_aspect": -1})", "decomposition.max_aspect"},
@@ -234,7 +235,7 @@ TEST(Case, BuiltinCaseEqualsTheCommittedOne) {
 
 // case_json with every option reads back to the same options.
 TEST(Case, AllOptionsJsonReadsBack) {
-  const Case c = parse_case(sphere2_case(R"(, "decomposition": {"inset": 0.4, "theta": 0.9, "rim_reach": 0}, "export": ["vtu"],
+  const Case c = parse_case(sphere2_case(R"(, "decomposition": {"inset": 0.4, "theta": 0.9, "rim_reach": 0, "corner_share": 0.15}, "export": ["vtu"],
       "tspline": {"relative_tolerance": 0.002, "rounds": 2},
       "load_case": {"fix": {"label": "outer", "components": "xz"}, "traction": {"label": "inner", "value": [0, 1, 0]},
                     "force": {"label": "outer", "box": [[0, 0, 0], [2, 2, 2]], "value": [0, 0, -2000]},
@@ -245,6 +246,7 @@ TEST(Case, AllOptionsJsonReadsBack) {
   EXPECT_EQ(igaprep::pipeline::case_json(back, models_dir() + "/sphere2", true), text);
   EXPECT_EQ(back.volume.theta, 0.9);
   EXPECT_EQ(back.base.rim_reach, 0.0);
+  EXPECT_EQ(back.volume.corner_share, 0.15);
   EXPECT_TRUE(back.auto_spread_deviation);
   const Case given = parse_case(sphere2_case(R"(, "decomposition": {"spread_deviation": 0.003})"),
                                 models_dir() + "/sphere2", "case.json");

@@ -6,6 +6,7 @@
 // w = w0) are piecewise linear with bumps of a few sample spacings; the
 // trivariate fit cannot follow them and the thin blocks fold. The smoothed
 // maps are polynomials plus a Coons blend of their sides.
+#include <array>
 #include <vector>
 
 #include <Eigen/Core>
@@ -25,7 +26,21 @@ std::vector<Eigen::Vector3d> smooth_polyline(const std::vector<Eigen::Vector3d>&
 // the same samples get the same side), then the inside as the Coons patch of
 // the four sides plus s (1 - s) t (1 - t) Q(s, t), Q of degree (degree - 2)
 // in each direction fitted by least squares.
+//
+// kept_corners (grid corners (0, 0), (m - 1, 0), (0, m - 1), (m - 1, m - 1)),
+// end_share (0 to 0.5): within end_share of a side's parameters from a kept
+// corner the smoothed side blends back to its samples, (1 - d / end_share)^2
+// of them at distance d. A layout corner on M's boundary maps a 90 degree
+// corner of the (u, v) domain onto a smooth boundary, and the sides bend
+// there within a few samples; the polynomial irons the bend out and opens
+// the corner towards 180 degrees, where the shells grown from it fold. The
+// blend depends on the side's samples and its ends' flags only, so two grids
+// that share a side and flag its ends alike still get the same side.
+struct KeptCorners {
+  std::array<bool, 4> corners{};
+  double end_share = 0.0;
+};
 std::vector<Eigen::Vector3d> smooth_grid(const std::vector<Eigen::Vector3d>& grid, const std::vector<double>& params,
-                                         int degree);
+                                         int degree, const KeptCorners& kept = {});
 
 }  // namespace igaprep::param

@@ -30,26 +30,22 @@ double figure(const iga_check::PipelineSection& p, const std::string& name) {
 const char* const kReduce = R"({"reduce": {"relative_tolerance": 0.001}, "validation": {"enabled": false}})";
 
 struct Fitted {
-  std::string model, fit;  // the case's "fit" section
-  bool certified;          // the fitted model passes its check
+  std::string name;           // the test's name and its scratch folder's
+  std::string model, fit;     // the case's "fit" section
+  std::string decomposition;  // the case's "decomposition" section ("" for none)
+  bool certified;             // the fitted model passes its check
 };
 
-void PrintTo(const Fitted& f, std::ostream* os) { *os << f.model << " fit " << f.fit; }
-
-// The test's name and its scratch folder's: the model and how it was fitted.
-std::string run_name(const Fitted& f) {
-  if (f.fit == "{}") return f.model + "_default_fit";
-  return f.model + (f.fit.find("jacobian_target") == std::string::npos ? "_12_elements" : "_12_elements_unrepaired");
-}
+void PrintTo(const Fitted& f, std::ostream* os) { *os << f.model << " fit " << f.fit << " " << f.decomposition; }
 
 class ReducedBuiltInModel : public ::testing::TestWithParam<Fitted> {};
 
 TEST_P(ReducedBuiltInModel, KeepsItsCertificatesConformityAndBound) {
-  const auto& [model, fit, certified] = GetParam();
+  const auto& [name, model, fit, decomposition, certified] = GetParam();
   nlohmann::json extra = nlohmann::json::parse(kReduce);
   extra["fit"] = nlohmann::json::parse(fit);
-  if (fit != "{}") extra["decomposition"] = {{"corner_share", 0.15}};
-  const pipeline::Case c = pipeline_test::model_case(model, extra.dump(), "reduce_" + run_name(GetParam()));
+  if (!decomposition.empty()) extra["decomposition"] = nlohmann::json::parse(decomposition);
+  const pipeline::Case c = pipeline_test::model_case(model, extra.dump(), "reduce_" + name);
   pipeline_test::Recorder observer;
   const pipeline::RunResult r = pipeline::run(c, observer);
   ASSERT_TRUE(r.report.pipeline.has_value());
@@ -100,11 +96,15 @@ TEST_P(ReducedBuiltInModel, KeepsItsCertificatesConformityAndBound) {
 // (6 elements, repaired, corners smoothed) are certified.
 const char* const kTwelve = R"({"elements": 12})";
 const char* const kTwelveUnrepaired = R"({"elements": 12, "jacobian_target": 0})";
+const char* const kCornersKept = R"({"corner_share": 0.15})";
 INSTANTIATE_TEST_SUITE_P(
     BuiltIn, ReducedBuiltInModel,
-    ::testing::Values(Fitted{"sphere2", kTwelve, true}, Fitted{"ring2", kTwelve, true}, Fitted{"torus3", kTwelve, true},
-                      Fitted{"ring2", kTwelveUnrepaired, false}, Fitted{"ring2", "{}", true},
-                      Fitted{"torus3", "{}", true}),
-    [](const auto& info) { return run_name(info.param); });
+    ::testing::Values(Fitted{"sphere2_12_elements", "sphere2", kTwelve, kCornersKept, true},
+                      Fitted{"ring2_12_elements", "ring2", kTwelve, kCornersKept, true},
+                      Fitted{"torus3_12_elements", "torus3", kTwelve, kCornersKept, true},
+                      Fitted{"ring2_12_elements_unrepaired", "ring2", kTwelveUnrepaired, kCornersKept, false},
+                      Fitted{"ring2_default_fit", "ring2", "{}", "", true},
+                      Fitted{"torus3_default_fit", "torus3", "{}", "", true}),
+    [](const auto& info) { return info.param.name; });
 
 }  // namespace

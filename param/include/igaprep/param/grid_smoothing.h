@@ -27,9 +27,9 @@ std::vector<Eigen::Vector3d> smooth_polyline(const std::vector<Eigen::Vector3d>&
 // the four sides plus s (1 - s) t (1 - t) Q(s, t), Q of degree (degree - 2)
 // in each direction fitted by least squares.
 //
-// kept_corners (grid corners (0, 0), (m - 1, 0), (0, m - 1), (m - 1, m - 1)),
-// end_share (0 to 0.5): within end_share of a side's parameters from a kept
-// corner the smoothed side blends back to its samples, (1 - d / end_share)^2
+// kept.corners (grid corners (0, 0), (m - 1, 0), (0, m - 1), (m - 1, m - 1)),
+// kept.end_share (0 to 0.5): within end_share of a side's parameters from a
+// kept corner the smoothed side blends back to its samples, (1 - d / end_share)^2
 // of them at distance d. A layout corner on M's boundary maps a 90 degree
 // corner of the (u, v) domain onto a smooth boundary, and the sides bend
 // there within a few samples; the polynomial irons the bend out and opens

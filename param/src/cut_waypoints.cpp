@@ -9,6 +9,7 @@
 
 #include "igaprep/core/error.h"
 #include "igaprep/param/cut_loops.h"
+#include "cut_smoothing.h"
 #include "edge_graph.h"
 
 namespace igaprep::param {
@@ -48,26 +49,6 @@ std::vector<int> waypoint_cycle(const mesh::TriMesh& T1, const Adjacency& adj,
   return cycle;
 }
 
-// The side of every vertex (+1 / -1, 0 on the loops), smoothed by a few rounds
-// of neighbour averaging: its zero set follows the edge path without the
-// path's staircase along the triangles.
-Eigen::VectorXd smoothed_sides(const CutLoops& cut, int rounds) {
-  const mesh::TriMesh& m = cut.surface;
-  Eigen::VectorXd x = cut.vertex_side.cast<double>();
-  const Adjacency adj = edge_graph(m);
-  for (int r = 0; r < rounds; ++r) {
-    Eigen::VectorXd next = x;
-    for (std::size_t v = 0; v < adj.size(); ++v) {
-      if (adj[v].empty()) continue;
-      double sum = 0.0;
-      for (const auto& [w, len] : adj[v]) sum += x(w);
-      next(static_cast<Eigen::Index>(v)) = 0.5 * x(static_cast<Eigen::Index>(v)) + 0.5 * sum / static_cast<double>(adj[v].size());
-    }
-    x = next;
-  }
-  return x;
-}
-
 }  // namespace
 
 CutLoops cut_by_waypoints(const mesh::TriMesh& T1, const std::vector<std::vector<Eigen::Vector3d>>& waypoints,
@@ -79,14 +60,7 @@ CutLoops cut_by_waypoints(const mesh::TriMesh& T1, const std::vector<std::vector
     loops.push_back(waypoint_cycle(T1, adj, waypoints[l], name + ": waypoint loop " + std::to_string(l)));
   CutLoops edges = cut_by_loops(T1, loops, name);
   edges.source = "waypoint loops";
-  // The smooth version when it is as valid; the edge paths otherwise.
-  try {
-    CutLoops smooth = cut_by_field(edges.surface, smoothed_sides(edges, 3), name, "waypoint loops, smoothed");
-    if (smooth.loops.size() == edges.loops.size()) return smooth;
-  } catch (const Error& e) {
-    if (e.kind() != ErrorKind::BadInput) throw;
-  }
-  return edges;
+  return detail::smoothed_cut(std::move(edges), name, "waypoint loops, smoothed");
 }
 
 }  // namespace igaprep::param

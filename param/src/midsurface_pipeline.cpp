@@ -8,6 +8,7 @@
 #include "igaprep/core/error.h"
 #include "igaprep/param/sheet_topology.h"
 #include "igaprep/param/thin_sides.h"
+#include "igaprep/param/tunnel_loops.h"
 
 namespace igaprep::param {
 namespace {
@@ -17,6 +18,9 @@ namespace {
 // the 8 shortest valid cuts.
 constexpr int kFamilyNormals = 40, kFamilyOffsets = 7;
 constexpr std::size_t kFamilyTried = 8;
+// The midsurface on at most this many of the tunnel loops' cuts (the
+// shortest first; one per choice of the loops' sides).
+constexpr std::size_t kTunnelCutsTried = 4;
 
 // Tet mesh, field and M0 for one cut.
 void build_m0(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOptions& o, MidsurfaceResult& r) {
@@ -138,6 +142,24 @@ void consider_thin_sides(const mesh::TriMesh& T1, const ThinSides& sides, const 
   }
 }
 
+// The cuts round the holes' waists, with the rim between the two sides
+// (tunnel_loops.h): for solids whose holes no plane cuts all at once.
+void consider_tunnel_loops(const mesh::TriMesh& T1, const std::string& name, CandidateCuts& candidates) {
+  std::vector<std::vector<int>> loops;
+  try {
+    loops = tunnel_loops(T1);
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::BadInput) throw;
+    candidates.tried().push_back(e.what());
+    return;
+  }
+  std::vector<CutLoops> cuts = tunnel_loop_cuts(T1, loops, name, candidates.tried());
+  for (std::size_t i = 0; i < cuts.size() && i < kTunnelCutsTried && !candidates.done(); ++i) {
+    cuts[i].source = "automatic: " + cuts[i].source;
+    candidates.consider(std::move(cuts[i]));
+  }
+}
+
 // A principal plane; one that runs through a face of T1 (within the
 // snapping tolerance) or along it is moved along its normal by a thousandth
 // of T1's diagonal, once each way, before it is given up.
@@ -178,8 +200,9 @@ constexpr double kThinRatio = 0.5;
 
 // The candidates, scored by cut_score: for a thin solid its two sides and
 // the principal planes; for others the principal planes, and the two sides
-// only when no plane gives a valid midsurface. When none does, the plane
-// family's shortest valid cuts (at most kFamilyTried).
+// only when no plane gives a valid midsurface. When none does, the tunnel
+// loops' cuts, then the plane family's shortest valid cuts (at most
+// kFamilyTried).
 MidsurfaceResult automatic_midsurface(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOptions& o,
                                       const std::string& name) {
   const mesh::TriMesh& T1 = surfaces[0];
@@ -202,6 +225,7 @@ MidsurfaceResult automatic_midsurface(const std::vector<mesh::TriMesh>& surfaces
     consider_plane(T1, planes[i], name, candidates);
   }
   if (sides && !thin && !candidates.found()) consider_thin_sides(T1, *sides, name, candidates);
+  if (!candidates.found() && closed_surface_genus(T1.F) >= 1) consider_tunnel_loops(T1, name, candidates);
   if (!candidates.found()) {
     const PlaneFamily family = cut_plane_family(T1, kFamilyNormals, kFamilyOffsets, name);
     auto& tried = candidates.tried();

@@ -5,38 +5,21 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <tuple>
-#include <unordered_map>
 #include <vector>
 
-#include "igaprep/core/edge_key.h"
 #include "igaprep/core/error.h"
-#include "igaprep/core/union_find.h"
 #include "igaprep/mesh/principal_axes.h"
 #include "igaprep/mesh/ray_caster.h"
+#include "face_graph.h"
 
 namespace igaprep::param {
 namespace {
 
+using detail::FaceEdge;
+using detail::FaceGeometry;
+
 using Triplets = std::vector<Eigen::Triplet<double>>;
-
-struct FaceGeometry {
-  Eigen::MatrixXd normal, centroid;  // #F x 3
-  Eigen::VectorXd area;
-};
-
-FaceGeometry face_geometry(const mesh::TriMesh& m) {
-  FaceGeometry g{Eigen::MatrixXd(m.F.rows(), 3), Eigen::MatrixXd(m.F.rows(), 3), Eigen::VectorXd(m.F.rows())};
-  for (Eigen::Index f = 0; f < m.F.rows(); ++f) {
-    const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
-    const Eigen::Vector3d n = (b - a).cross(c - a);
-    g.area(f) = 0.5 * n.norm();
-    g.normal.row(f) = g.area(f) > 0.0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d::Zero();
-    g.centroid.row(f) = (a + b + c) / 3.0;
-  }
-  return g;
-}
 
 struct PlatePair {
   int face, opposite;
@@ -65,37 +48,10 @@ double median_distance(std::vector<PlatePair> pairs) {
   return mid->distance;
 }
 
-// Pairs of faces sharing an edge, with the edge's length.
-struct FaceEdge {
-  int a, b;
-  double length;
-};
-
-std::vector<FaceEdge> face_neighbours(const mesh::TriMesh& m) {
-  std::unordered_map<std::uint64_t, int> first;
-  std::vector<FaceEdge> edges;
-  for (int f = 0; f < static_cast<int>(m.F.rows()); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int u = m.F(f, k), v = m.F(f, (k + 1) % 3);
-      const auto [it, inserted] = first.emplace(edge_key(u, v), f);
-      if (!inserted) edges.push_back({it->second, f, (m.V.row(u) - m.V.row(v)).norm()});
-    }
-  return edges;
-}
-
-// Neighbours want equal values, weakly across sharp edges (where a rim loop
-// should run): exp(-(1 - cos)/sharpness) times the cotangent-like ratio of
-// the shared edge's length to the centroids' spacing. 0 for coincident centroids.
-double neighbour_weight(const FaceGeometry& g, const FaceEdge& e, double sharpness) {
-  const double cosine = g.normal.row(e.a).dot(g.normal.row(e.b));
-  const double spacing = (g.centroid.row(e.a) - g.centroid.row(e.b)).norm();
-  return spacing > 0.0 ? std::exp(-(1.0 - cosine) / sharpness) * e.length / spacing : 0.0;
-}
-
 // The graph Laplacian of those weights.
 void add_neighbour_terms(const FaceGeometry& g, const std::vector<FaceEdge>& edges, double sharpness, Triplets& t) {
   for (const FaceEdge& e : edges) {
-    const double w = neighbour_weight(g, e, sharpness);
+    const double w = detail::neighbour_weight(g, e, sharpness);
     t.emplace_back(e.a, e.a, w);
     t.emplace_back(e.b, e.b, w);
     t.emplace_back(e.a, e.b, -w);
@@ -157,7 +113,7 @@ Eigen::VectorXd settle_thick_parts(const FaceGeometry& g, const std::vector<Face
   Triplets t;
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(nfree), degree = Eigen::VectorXd::Zero(nfree);
   for (const FaceEdge& e : edges) {
-    const double w = neighbour_weight(g, e, sharpness);
+    const double w = detail::neighbour_weight(g, e, sharpness);
     const int ia = free_index[static_cast<std::size_t>(e.a)], ib = free_index[static_cast<std::size_t>(e.b)];
     for (const auto& [i, j, other] : {std::tuple{ia, ib, e.b}, std::tuple{ib, ia, e.a}}) {
       if (i < 0) continue;
@@ -188,56 +144,17 @@ Eigen::VectorXd settle_thick_parts(const FaceGeometry& g, const std::vector<Face
   return x;
 }
 
-// Connected pieces of the faces of one sign (across shared edges).
-std::vector<int> pieces_of_sign(const std::vector<FaceEdge>& edges, const Eigen::VectorXd& x, int sign) {
-  UnionFind uf(static_cast<int>(x.size()));
-  for (const FaceEdge& e : edges)
-    if ((x(e.a) > 0) == (sign > 0) && (x(e.b) > 0) == (sign > 0)) uf.unite(e.a, e.b);
-  std::vector<int> piece(static_cast<std::size_t>(x.size()));
-  for (int f = 0; f < static_cast<int>(x.size()); ++f) piece[static_cast<std::size_t>(f)] = uf.find(f);
-  return piece;
-}
-
-// Every piece of each sign but the largest (by area) changes sign.
-int give_small_pieces_away(const std::vector<FaceEdge>& edges, const Eigen::VectorXd& area, Eigen::VectorXd& x) {
-  int flipped = 0;
-  for (int sign : {1, -1}) {
-    const std::vector<int> piece = pieces_of_sign(edges, x, sign);
-    std::unordered_map<int, double> piece_area;
-    for (int f = 0; f < static_cast<int>(x.size()); ++f)
-      if ((x(f) > 0) == (sign > 0)) piece_area[piece[static_cast<std::size_t>(f)]] += area(f);
-    if (piece_area.size() < 2) continue;
-    const int largest = std::max_element(piece_area.begin(), piece_area.end(),
-                                         [](const auto& a, const auto& b) { return a.second < b.second; })
-                            ->first;
-    flipped += static_cast<int>(piece_area.size()) - 1;
-    for (int f = 0; f < static_cast<int>(x.size()); ++f)
-      if ((x(f) > 0) == (sign > 0) && piece[static_cast<std::size_t>(f)] != largest) x(f) = -x(f);
-  }
-  return flipped;
-}
-
-Eigen::VectorXd vertex_means(const mesh::TriMesh& m, const Eigen::VectorXd& area, const Eigen::VectorXd& x) {
-  Eigen::VectorXd sum = Eigen::VectorXd::Zero(m.V.rows()), weight = Eigen::VectorXd::Zero(m.V.rows());
-  for (Eigen::Index f = 0; f < m.F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      sum(m.F(f, k)) += area(f) * x(f);
-      weight(m.F(f, k)) += area(f);
-    }
-  return sum.cwiseQuotient(weight.cwiseMax(1e-300));
-}
-
 }  // namespace
 
 ThinSides thin_sides(const mesh::TriMesh& T1, const ThinSidesOptions& o) {
-  const FaceGeometry g = face_geometry(T1);
+  const FaceGeometry g = detail::face_geometry(T1);
   const std::vector<PlatePair> pairs = plate_pairs(T1, g);
   if (pairs.empty()) throw bad_input("thin sides: no face of the surface faces another across the solid");
   ThinSides r;
   r.median_thickness = median_distance(pairs);
   r.up = mesh::surface_principal_axes(T1).axes.col(0);
 
-  const std::vector<FaceEdge> edges = face_neighbours(T1);
+  const std::vector<FaceEdge> edges = detail::face_neighbours(T1);
   Triplets t;
   add_neighbour_terms(g, edges, o.sharpness, t);
   const double max_distance = o.thin_factor * r.median_thickness;
@@ -257,8 +174,8 @@ ThinSides thin_sides(const mesh::TriMesh& T1, const ThinSidesOptions& o) {
   r.face_value = solver.solve(rhs);
   const std::vector<char> paired = paired_faces(nf, pairs, max_distance);
   r.face_value = settle_thick_parts(g, edges, paired, r.up, r.median_thickness, o.sharpness, r.face_value);
-  r.flipped_pieces = give_small_pieces_away(edges, g.area, r.face_value);
-  r.vertex_value = vertex_means(T1, g.area, r.face_value);
+  r.flipped_pieces = detail::give_small_pieces_away(edges, g.area, r.face_value);
+  r.vertex_value = detail::vertex_means(T1, g.area, r.face_value);
   return r;
 }
 

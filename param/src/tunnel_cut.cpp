@@ -1,0 +1,142 @@
+// The cuts tunnel loops give (tunnel_loops.h, tunnel_loop_cuts).
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "igaprep/core/edge_key.h"
+#include "igaprep/core/error.h"
+#include "igaprep/param/tunnel_loops.h"
+#include "cut_smoothing.h"
+#include "face_graph.h"
+
+namespace igaprep::param {
+namespace {
+
+// Neighbour weights as for the thin sides: the rim prefers sharp edges.
+constexpr double kSharpness = 0.3;
+// At most this many sign choices are tried (2^6: genus 7).
+constexpr int kMaxSignChoices = 64;
+
+// The faces beside each loop: +1 on its left (the face that runs a -> b for
+// consecutive loop vertices a, b), -1 on its right, 0 elsewhere; one column
+// per loop.
+Eigen::MatrixXi loop_sides(const mesh::TriMesh& m, const std::vector<std::vector<int>>& loops) {
+  std::unordered_map<std::uint64_t, int> face_of;
+  for (int f = 0; f < static_cast<int>(m.F.rows()); ++f)
+    for (int k = 0; k < 3; ++k)
+      face_of[(static_cast<std::uint64_t>(m.F(f, k)) << 32) | static_cast<std::uint32_t>(m.F(f, (k + 1) % 3))] = f;
+  Eigen::MatrixXi side = Eigen::MatrixXi::Zero(m.F.rows(), static_cast<Eigen::Index>(loops.size()));
+  auto face = [&](int a, int b) {
+    const auto it = face_of.find((static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint32_t>(b));
+    if (it == face_of.end()) throw internal_error("tunnel cut: a loop edge is no edge of T1");
+    return it->second;
+  };
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    for (std::size_t k = 0; k < loops[l].size(); ++k) {
+      const int a = loops[l][k], b = loops[l][(k + 1) % loops[l].size()];
+      side(face(a, b), static_cast<Eigen::Index>(l)) = 1;
+      side(face(b, a), static_cast<Eigen::Index>(l)) = -1;
+    }
+  return side;
+}
+
+// The harmonic face field with given values beside the loops: one
+// factorisation of the free faces' Laplacian (no coupling across a loop
+// edge), then one solve per choice of signs.
+class SideField {
+ public:
+  SideField(const mesh::TriMesh& m, const std::vector<std::vector<int>>& loops)
+      : geometry_(detail::face_geometry(m)), edges_(detail::face_neighbours(m)), sides_(loop_sides(m, loops)) {
+    std::unordered_set<std::uint64_t> loop_edges;
+    for (const auto& loop : loops)
+      for (std::size_t k = 0; k < loop.size(); ++k) loop_edges.insert(edge_key(loop[k], loop[(k + 1) % loop.size()]));
+    const Eigen::Index nf = m.F.rows();
+    free_.assign(static_cast<std::size_t>(nf), -1);
+    int nfree = 0;
+    for (Eigen::Index f = 0; f < nf; ++f)
+      if (sides_.row(f).isZero()) free_[static_cast<std::size_t>(f)] = nfree++;
+    std::vector<Eigen::Triplet<double>> a, b;
+    for (const detail::FaceEdge& e : edges_) {
+      if (loop_edges.count(edge_key(e.u, e.v))) continue;
+      const double w = detail::neighbour_weight(geometry_, e, kSharpness) + 1e-12;
+      for (const auto& [p, q] : {std::pair{e.a, e.b}, std::pair{e.b, e.a}}) {
+        const int i = free_[static_cast<std::size_t>(p)], j = free_[static_cast<std::size_t>(q)];
+        if (i < 0) continue;
+        a.emplace_back(i, i, w);
+        if (j >= 0) a.emplace_back(i, j, -w);
+        else b.emplace_back(i, q, w);
+      }
+    }
+    Eigen::SparseMatrix<double> A(nfree, nfree);
+    A.setFromTriplets(a.begin(), a.end());
+    coupling_.resize(nfree, nf);
+    coupling_.setFromTriplets(b.begin(), b.end());
+    solver_.compute(A);
+    if (solver_.info() != Eigen::Success) throw internal_error("tunnel cut: the side field's matrix is singular");
+  }
+
+  // signs(l) is the value on loop l's left, minus it on its right.
+  Eigen::VectorXd solve(const Eigen::VectorXi& signs) const {
+    const Eigen::VectorXd fixed = (sides_ * signs).cast<double>();
+    const Eigen::VectorXd inner = solver_.solve(coupling_ * fixed);
+    Eigen::VectorXd x = fixed;
+    for (std::size_t f = 0; f < free_.size(); ++f)
+      if (free_[f] >= 0) x(static_cast<Eigen::Index>(f)) = inner(free_[f]);
+    return x;
+  }
+
+  const detail::FaceGeometry& geometry() const { return geometry_; }
+  const std::vector<detail::FaceEdge>& edges() const { return edges_; }
+
+ private:
+  detail::FaceGeometry geometry_;
+  std::vector<detail::FaceEdge> edges_;
+  Eigen::MatrixXi sides_;
+  std::vector<int> free_;
+  Eigen::SparseMatrix<double> coupling_;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver_;
+};
+
+std::string describe(const std::vector<std::vector<int>>& loops, const Eigen::VectorXi& signs) {
+  std::string s = "tunnel loops (" + std::to_string(loops.size()) + " of";
+  for (std::size_t l = 0; l < loops.size(); ++l) s += (l ? ", " : " ") + std::to_string(loops[l].size());
+  s += " edges; sides ";
+  for (Eigen::Index l = 0; l < signs.size(); ++l) s += signs(l) > 0 ? '+' : '-';
+  return s + ")";
+}
+
+}  // namespace
+
+std::vector<CutLoops> tunnel_loop_cuts(const mesh::TriMesh& T1, const std::vector<std::vector<int>>& loops,
+                                       const std::string& name, std::vector<std::string>& refusals) {
+  if (loops.empty()) throw internal_error("tunnel cut: no loops");
+  const SideField field(T1, loops);
+  const int choices = loops.size() > 7 ? kMaxSignChoices : std::min(1 << (loops.size() - 1), kMaxSignChoices);
+  std::vector<CutLoops> valid;
+  for (int choice = 0; choice < choices; ++choice) {
+    Eigen::VectorXi signs = Eigen::VectorXi::Ones(static_cast<Eigen::Index>(loops.size()));
+    for (std::size_t l = 1; l < loops.size(); ++l)
+      if (choice & (1 << (l - 1))) signs(static_cast<Eigen::Index>(l)) = -1;
+    const std::string source = describe(loops, signs);
+    Eigen::VectorXd x = field.solve(signs);
+    detail::give_small_pieces_away(field.edges(), field.geometry().area, x);
+    const Eigen::VectorXi face_side = x.unaryExpr([](double v) { return v < 0.0 ? -1 : 1; });
+    try {
+      CutLoops edges = validate_cut(T1, face_side, name, source);
+      valid.push_back(detail::smoothed_cut(std::move(edges), name, source + ", smoothed"));
+    } catch (const Error& e) {
+      if (e.kind() != ErrorKind::BadInput) throw;
+      refusals.push_back(source + ": " + e.what());
+    }
+  }
+  std::stable_sort(valid.begin(), valid.end(),
+                   [](const CutLoops& a, const CutLoops& b) { return loops_length(a) < loops_length(b); });
+  return valid;
+}
+
+}  // namespace igaprep::param

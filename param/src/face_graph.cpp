@@ -9,6 +9,7 @@
 
 #include "igaprep/core/edge_key.h"
 #include "igaprep/core/union_find.h"
+#include "igaprep/mesh/ray_caster.h"
 
 namespace igaprep::param::detail {
 namespace {
@@ -71,6 +72,27 @@ int give_small_pieces_away(const std::vector<FaceEdge>& edges, const Eigen::Vect
       if ((x(f) > 0) == (sign > 0) && piece[static_cast<std::size_t>(f)] != largest) x(f) = -x(f);
   }
   return flipped;
+}
+
+std::vector<PlatePair> plate_pairs(const mesh::TriMesh& m, const FaceGeometry& g) {
+  const mesh::RayCaster caster(m);
+  std::vector<PlatePair> pairs;
+  for (int f = 0; f < static_cast<int>(m.F.rows()); ++f) {
+    if (!(g.area(f) > 0.0)) continue;
+    const Eigen::Vector3d n = g.normal.row(f);
+    const auto hit = caster.first_hit(g.centroid.row(f).transpose(), -n, f);
+    if (!hit || !(hit->distance > 0.0)) continue;
+    if (g.normal.row(hit->face).dot(n) > -0.5) continue;
+    pairs.push_back({f, hit->face, hit->distance});
+  }
+  return pairs;
+}
+
+double median_distance(std::vector<PlatePair> pairs) {
+  const auto mid = pairs.begin() + static_cast<std::ptrdiff_t>(pairs.size() / 2);
+  std::nth_element(pairs.begin(), mid, pairs.end(),
+                   [](const PlatePair& a, const PlatePair& b) { return a.distance < b.distance; });
+  return mid->distance;
 }
 
 Eigen::VectorXd vertex_means(const mesh::TriMesh& m, const Eigen::VectorXd& area, const Eigen::VectorXd& x) {

@@ -33,6 +33,15 @@ double neighbour_weight(const FaceGeometry& g, const FaceEdge& e, double sharpne
 // Returns how many pieces changed.
 int give_small_pieces_away(const std::vector<FaceEdge>& edges, const Eigen::VectorXd& area, Eigen::VectorXd& x);
 
+// A face and the face its inward ray meets first when that one faces back
+// (normals more than 120 degrees apart): the two sides of a thin part.
+struct PlatePair {
+  int face, opposite;
+  double distance;
+};
+std::vector<PlatePair> plate_pairs(const mesh::TriMesh& m, const FaceGeometry& g);
+double median_distance(std::vector<PlatePair> pairs);  // of a non-empty list
+
 // Per vertex the area-weighted mean of its faces' values.
 Eigen::VectorXd vertex_means(const mesh::TriMesh& m, const Eigen::VectorXd& area, const Eigen::VectorXd& x);
 

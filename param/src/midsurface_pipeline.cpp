@@ -154,7 +154,8 @@ void consider_tunnel_loops(const mesh::TriMesh& T1, const std::string& name, Can
     return;
   }
   std::vector<CutLoops> cuts = tunnel_loop_cuts(T1, loops, name, candidates.tried());
-  for (std::size_t i = 0; i < cuts.size() && i < kTunnelCutsTried && !candidates.done(); ++i) {
+  // Every one is scored: the shortest loops need not give the shortest paths.
+  for (std::size_t i = 0; i < cuts.size() && i < kTunnelCutsTried; ++i) {
     cuts[i].source = "automatic: " + cuts[i].source;
     candidates.consider(std::move(cuts[i]));
   }

@@ -10,7 +10,6 @@
 
 #include "igaprep/core/error.h"
 #include "igaprep/mesh/principal_axes.h"
-#include "igaprep/mesh/ray_caster.h"
 #include "face_graph.h"
 
 namespace igaprep::param {
@@ -18,35 +17,9 @@ namespace {
 
 using detail::FaceEdge;
 using detail::FaceGeometry;
+using detail::PlatePair;
 
 using Triplets = std::vector<Eigen::Triplet<double>>;
-
-struct PlatePair {
-  int face, opposite;
-  double distance;
-};
-
-// Faces whose inward ray first meets a face turned back towards them.
-std::vector<PlatePair> plate_pairs(const mesh::TriMesh& m, const FaceGeometry& g) {
-  const mesh::RayCaster caster(m);
-  std::vector<PlatePair> pairs;
-  for (int f = 0; f < static_cast<int>(m.F.rows()); ++f) {
-    if (!(g.area(f) > 0.0)) continue;
-    const Eigen::Vector3d n = g.normal.row(f);
-    const auto hit = caster.first_hit(g.centroid.row(f).transpose(), -n, f);
-    if (!hit || !(hit->distance > 0.0)) continue;
-    if (g.normal.row(hit->face).dot(n) > -0.5) continue;
-    pairs.push_back({f, hit->face, hit->distance});
-  }
-  return pairs;
-}
-
-double median_distance(std::vector<PlatePair> pairs) {
-  const auto mid = pairs.begin() + static_cast<std::ptrdiff_t>(pairs.size() / 2);
-  std::nth_element(pairs.begin(), mid, pairs.end(),
-                   [](const PlatePair& a, const PlatePair& b) { return a.distance < b.distance; });
-  return mid->distance;
-}
 
 // The graph Laplacian of those weights.
 void add_neighbour_terms(const FaceGeometry& g, const std::vector<FaceEdge>& edges, double sharpness, Triplets& t) {
@@ -148,10 +121,10 @@ Eigen::VectorXd settle_thick_parts(const FaceGeometry& g, const std::vector<Face
 
 ThinSides thin_sides(const mesh::TriMesh& T1, const ThinSidesOptions& o) {
   const FaceGeometry g = detail::face_geometry(T1);
-  const std::vector<PlatePair> pairs = plate_pairs(T1, g);
+  const std::vector<PlatePair> pairs = detail::plate_pairs(T1, g);
   if (pairs.empty()) throw bad_input("thin sides: no face of the surface faces another across the solid");
   ThinSides r;
-  r.median_thickness = median_distance(pairs);
+  r.median_thickness = detail::median_distance(pairs);
   r.up = mesh::surface_principal_axes(T1).axes.col(0);
 
   const std::vector<FaceEdge> edges = detail::face_neighbours(T1);

@@ -21,6 +21,9 @@ namespace {
 constexpr double kSharpness = 0.3;
 // At most this many sign choices are tried (2^6: genus 7).
 constexpr int kMaxSignChoices = 64;
+// Plate pairs up to this many times their median distance apart pull the
+// two sides of a thin part apart (as for the thin sides).
+constexpr double kThinFactor = 2.0;
 
 // The faces beside each loop: +1 on its left (the face that runs a -> b for
 // consecutive loop vertices a, b), -1 on its right, 0 elsewhere; one column
@@ -45,12 +48,14 @@ Eigen::MatrixXi loop_sides(const mesh::TriMesh& m, const std::vector<std::vector
   return side;
 }
 
-// The harmonic face field with given values beside the loops: one
-// factorisation of the free faces' Laplacian (no coupling across a loop
-// edge), then one solve per choice of signs.
+// The face field with given values beside the loops: harmonic on T1 cut
+// along them (no coupling across a loop edge) and, with plate pairs, the
+// thin sides' pull of each pair to opposite values. One factorisation, then
+// one solve per choice of signs.
 class SideField {
  public:
-  SideField(const mesh::TriMesh& m, const std::vector<std::vector<int>>& loops)
+  SideField(const mesh::TriMesh& m, const std::vector<std::vector<int>>& loops,
+            const std::vector<detail::PlatePair>& pairs, double max_distance)
       : geometry_(detail::face_geometry(m)), edges_(detail::face_neighbours(m)), sides_(loop_sides(m, loops)) {
     std::unordered_set<std::uint64_t> loop_edges;
     for (const auto& loop : loops)
@@ -70,6 +75,17 @@ class SideField {
         a.emplace_back(i, i, w);
         if (j >= 0) a.emplace_back(i, j, -w);
         else b.emplace_back(i, q, w);
+      }
+    }
+    for (const detail::PlatePair& p : pairs) {
+      if (p.distance > max_distance) continue;
+      const double w = geometry_.area(p.face) / (p.distance * p.distance);
+      for (const auto& [f, g] : {std::pair{p.face, p.opposite}, std::pair{p.opposite, p.face}}) {
+        const int i = free_[static_cast<std::size_t>(f)], j = free_[static_cast<std::size_t>(g)];
+        if (i < 0) continue;
+        a.emplace_back(i, i, w);
+        if (j >= 0) a.emplace_back(i, j, w);
+        else b.emplace_back(i, g, -w);
       }
     }
     Eigen::SparseMatrix<double> A(nfree, nfree);
@@ -102,12 +118,12 @@ class SideField {
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver_;
 };
 
-std::string describe(const std::vector<std::vector<int>>& loops, const Eigen::VectorXi& signs) {
+std::string describe(const std::vector<std::vector<int>>& loops, const Eigen::VectorXi& signs, bool thin) {
   std::string s = "tunnel loops (" + std::to_string(loops.size()) + " of";
   for (std::size_t l = 0; l < loops.size(); ++l) s += (l ? ", " : " ") + std::to_string(loops[l].size());
   s += " edges; sides ";
   for (Eigen::Index l = 0; l < signs.size(); ++l) s += signs(l) > 0 ? '+' : '-';
-  return s + ")";
+  return s + (thin ? "; the thin parts' two sides)" : ")");
 }
 
 }  // namespace
@@ -115,23 +131,28 @@ std::string describe(const std::vector<std::vector<int>>& loops, const Eigen::Ve
 std::vector<CutLoops> tunnel_loop_cuts(const mesh::TriMesh& T1, const std::vector<std::vector<int>>& loops,
                                        const std::string& name, std::vector<std::string>& refusals) {
   if (loops.empty()) throw internal_error("tunnel cut: no loops");
-  const SideField field(T1, loops);
+  const std::vector<detail::PlatePair> pairs = detail::plate_pairs(T1, detail::face_geometry(T1));
+  const double max_distance = pairs.empty() ? 0.0 : kThinFactor * detail::median_distance(pairs);
   const int choices = loops.size() > 7 ? kMaxSignChoices : std::min(1 << (loops.size() - 1), kMaxSignChoices);
   std::vector<CutLoops> valid;
-  for (int choice = 0; choice < choices; ++choice) {
-    Eigen::VectorXi signs = Eigen::VectorXi::Ones(static_cast<Eigen::Index>(loops.size()));
-    for (std::size_t l = 1; l < loops.size(); ++l)
-      if (choice & (1 << (l - 1))) signs(static_cast<Eigen::Index>(l)) = -1;
-    const std::string source = describe(loops, signs);
-    Eigen::VectorXd x = field.solve(signs);
-    detail::give_small_pieces_away(field.edges(), field.geometry().area, x);
-    const Eigen::VectorXi face_side = x.unaryExpr([](double v) { return v < 0.0 ? -1 : 1; });
-    try {
-      CutLoops edges = validate_cut(T1, face_side, name, source);
-      valid.push_back(detail::smoothed_cut(std::move(edges), name, source + ", smoothed"));
-    } catch (const Error& e) {
-      if (e.kind() != ErrorKind::BadInput) throw;
-      refusals.push_back(source + ": " + e.what());
+  for (const bool thin : {false, true}) {
+    if (thin && pairs.empty()) break;
+    const SideField field(T1, loops, thin ? pairs : std::vector<detail::PlatePair>{}, max_distance);
+    for (int choice = 0; choice < choices; ++choice) {
+      Eigen::VectorXi signs = Eigen::VectorXi::Ones(static_cast<Eigen::Index>(loops.size()));
+      for (std::size_t l = 1; l < loops.size(); ++l)
+        if (choice & (1 << (l - 1))) signs(static_cast<Eigen::Index>(l)) = -1;
+      const std::string source = describe(loops, signs, thin);
+      Eigen::VectorXd x = field.solve(signs);
+      detail::give_small_pieces_away(field.edges(), field.geometry().area, x);
+      const Eigen::VectorXi face_side = x.unaryExpr([](double v) { return v < 0.0 ? -1 : 1; });
+      try {
+        CutLoops edges = validate_cut(T1, face_side, name, source);
+        valid.push_back(detail::smoothed_cut(std::move(edges), name, source + ", smoothed"));
+      } catch (const Error& e) {
+        if (e.kind() != ErrorKind::BadInput) throw;
+        refusals.push_back(source + ": " + e.what());
+      }
     }
   }
   std::stable_sort(valid.begin(), valid.end(),

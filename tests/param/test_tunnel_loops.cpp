@@ -2,10 +2,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <set>
 
 #include "igaprep/core/error.h"
+#include "igaprep/mesh/read_surface.h"
 #include "igaprep/models/shapes.h"
+#include "igaprep/param/midsurface_pipeline.h"
 #include "igaprep/param/tunnel_loops.h"
 
 using namespace igaprep;
@@ -85,20 +88,22 @@ TEST(TunnelLoops, GenusZeroIsRefused) {
 }
 
 // The torus's one loop, with its two sides apart: the rim is the outer
-// equator (by symmetry), and the cut is valid.
+// equator (by symmetry), with the harmonic field and with the tube's two
+// sides pulled apart, and each cut is valid.
 TEST(TunnelLoopCuts, TheTorusRimIsItsOuterEquator) {
   const mesh::TriMesh torus = models::make_torus(1.0, 0.4, 48, 24);
   std::vector<std::string> refusals;
   const auto cuts = tunnel_loop_cuts(torus, tunnel_loops(torus), "torus", refusals);
-  ASSERT_EQ(cuts.size(), 1u) << (refusals.empty() ? "" : refusals.front());
-  const CutLoops& cut = cuts.front();
-  ASSERT_EQ(cut.loops.size(), 2u);
-  int outer = radius_from_z_axis(cut.surface, cut.loops[0][0]) > 1.0 ? 0 : 1;
-  for (int v : cut.loops[static_cast<std::size_t>(outer)]) {
-    EXPECT_NEAR(radius_from_z_axis(cut.surface, v), 1.4, 0.02);
-    EXPECT_NEAR(cut.surface.V(v, 2), 0.0, 0.05);
+  ASSERT_EQ(cuts.size(), 2u) << (refusals.empty() ? "" : refusals.front());
+  for (const CutLoops& cut : cuts) {
+    ASSERT_EQ(cut.loops.size(), 2u);
+    const int outer = radius_from_z_axis(cut.surface, cut.loops[0][0]) > 1.0 ? 0 : 1;
+    for (int v : cut.loops[static_cast<std::size_t>(outer)]) {
+      EXPECT_NEAR(radius_from_z_axis(cut.surface, v), 1.4, 0.02) << cut.source;
+      EXPECT_NEAR(cut.surface.V(v, 2), 0.0, 0.05) << cut.source;
+    }
+    EXPECT_NE(cut.source.find("tunnel loops"), std::string::npos);
   }
-  EXPECT_NE(cut.source.find("tunnel loops"), std::string::npos);
 }
 
 // The frame's three loops with every choice of sides: the one with all holes'
@@ -109,5 +114,18 @@ TEST(TunnelLoopCuts, TheFrameWithItsHolesSidesAlikeIsValid) {
   const auto cuts = tunnel_loop_cuts(frame, tunnel_loops(frame), "frame", refusals);
   ASSERT_FALSE(cuts.empty()) << (refusals.empty() ? "" : refusals.front());
   EXPECT_EQ(cuts.front().loops.size(), 4u);
-  EXPECT_EQ(cuts.size() + refusals.size(), 4u);  // 2^(3-1) choices
+  EXPECT_EQ(cuts.size() + refusals.size(), 8u);  // 2^(3-1) choices, harmonic and with the thin sides
+}
+
+// The hip bone of ../shared/models (genus 2: the obturator foramen and a
+// small hole): no plane cuts both holes, and the thin sides twist through the
+// pubic rami; the tunnel loops give its automatic cut.
+TEST(TunnelLoopCuts, ThePelvisGetsAnAutomaticCut) {
+  const std::string path = std::string(IGAPREP_SHARED_MODELS_DIR) + "/pelvis_hip.stl";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared model " << path << " is absent";
+  const mesh::TriMesh pelvis = mesh::read_surface(path);
+  const MidsurfaceResult r = build_midsurface({pelvis}, MidsurfaceOptions{}, "pelvis");
+  EXPECT_NE(r.cut.source.find("tunnel loops"), std::string::npos) << r.cut.source;
+  EXPECT_EQ(r.cut.loops.size(), 3u);
+  EXPECT_EQ(r.m0trim.boundary_loops.size(), 3u);
 }

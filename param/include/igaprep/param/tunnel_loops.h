@@ -34,10 +34,13 @@ struct TunnelLoopOptions {
 std::vector<std::vector<int>> tunnel_loops(const mesh::TriMesh& T1, const TunnelLoopOptions& options = {});
 
 // The cuts the tunnel loops give: each loop's two sides on T1 take opposite
-// signs; for every choice of the signs (the first loop's fixed) a field
-// harmonic on T1 cut along the loops has those values beside them, and its
-// zero set adds the rim between the two sides. The valid cuts, shortest
-// total loop length first; `refusals` gets why the others were refused.
+// signs; for every choice of the signs (the first loop's fixed) a face field
+// on T1 cut along the loops has those values beside them, and its zero set
+// adds the rim between the two sides. The field is harmonic, and once more
+// with the thin sides' pull of opposite faces of thin parts to opposite
+// values (thin_sides.h), so that the rim runs along a plate's edge rather
+// than across the plate. The valid cuts, shortest total loop length first;
+// `refusals` gets why the others were refused.
 std::vector<CutLoops> tunnel_loop_cuts(const mesh::TriMesh& T1, const std::vector<std::vector<int>>& loops,
                                        const std::string& name, std::vector<std::string>& refusals);
 

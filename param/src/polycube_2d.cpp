@@ -18,6 +18,7 @@
 #include "igaprep/param/harmonic_field.h"
 #include "igaprep/param/sheet_lobes.h"
 #include "edge_graph.h"
+#include "polycube_hole_cuts.h"
 #include "igaprep/param/stiffness_matrix.h"
 
 namespace igaprep::param {
@@ -1018,14 +1019,7 @@ void fix_neck_paths(const mesh::TriMesh& sheet, const Polycube2D& pc, Eigen::Mat
       const DomainArm& d = pc.domain.arms.at(next++);
       const auto [start, dir] = side_line(pc.domain, d.side);
       const Eigen::Vector2d a = start + d.from * dir, b = start + d.to * dir;
-      const std::vector<int>& path = arm.neck_path;
-      std::vector<double> s(path.size(), 0.0);
-      for (std::size_t i = 1; i < path.size(); ++i) s[i] = s[i - 1] + (P(sheet, path[i]) - P(sheet, path[i - 1])).norm();
-      for (std::size_t i = 0; i < path.size(); ++i) {
-        const double t = s.back() > 0.0 ? s[i] / s.back() : 0.0;
-        uv.row(path[i]) = ((1.0 - t) * a + t * b).transpose();
-        fixed[static_cast<std::size_t>(path[i])] = 1;
-      }
+      detail::spread_on_segment(sheet, arm.neck_path, a, b, uv, fixed);
     }
 }
 
@@ -1034,6 +1028,7 @@ void map_to_domain(const mesh::TriMesh& sheet, Polycube2D& pc) {
   std::vector<char> fixed;
   Eigen::MatrixXd buv = boundary_uv(sheet, pc.segments, fixed);
   fix_neck_paths(sheet, pc, buv, fixed);
+  detail::fix_hole_cuts(sheet, pc, buv, fixed);
   for (UvWeights w : {UvWeights::Cotangent, UvWeights::MeanValue}) {
     pc.weights.clear();
     pc.uv = harmonic_uv(sheet, buv, fixed, w);
@@ -1076,11 +1071,12 @@ bool find_neck_paths(const mesh::TriMesh& sheet, std::vector<PolycubeLoop>& loop
 }
 
 // Splits every edge inside the sheet whose two ends are fixed (on a boundary
-// loop or a neck path) and that is no neck path's own edge: a triangle with
+// loop, a neck path or one of `paths`) and that is no such path's own edge: a triangle with
 // three fixed vertices could be flat (three vertices on one straight line of
 // the domain), and a convex-combination map is bijective only without such
 // chords. The loops and the paths keep their vertices. Returns the splits.
-int split_fixed_chords(mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops) {
+int split_fixed_chords(mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops,
+                       const std::vector<std::vector<int>>& paths = {}) {
   int total = 0;
   for (int pass = 0; pass < 8; ++pass) {
     std::vector<char> fixed(static_cast<std::size_t>(m.V.rows()), 0);
@@ -1091,6 +1087,10 @@ int split_fixed_chords(mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops)
         for (int v : arm.neck_path) fixed[static_cast<std::size_t>(v)] = 1;
         for (std::size_t i = 1; i < arm.neck_path.size(); ++i) path_edges.insert(edge_key(arm.neck_path[i - 1], arm.neck_path[i]));
       }
+    }
+    for (const std::vector<int>& path : paths) {
+      for (int v : path) fixed[static_cast<std::size_t>(v)] = 1;
+      for (std::size_t i = 1; i < path.size(); ++i) path_edges.insert(edge_key(path[i - 1], path[i]));
     }
     std::unordered_map<std::uint64_t, int> faces_of_edge;
     for (int f = 0; f < m.F.rows(); ++f)
@@ -1164,6 +1164,16 @@ Polycube2D polycube_2d(mesh::TriMesh& sheet, const std::vector<std::vector<int>>
     // The arms' reflex corners may fold the map where the rectangle alone does not.
     if (pc.min_jacobian > 0.0 || pc.domain.arms.empty()) break;
     drop_arms("the (u, v) map with them folded");
+  }
+  // Still folded next to the holes' corners: cut the domain into rectangles
+  // from them, each part convex (polycube_hole_cuts.h).
+  if (!(pc.min_jacobian > 0.0) && !pc.domain.holes.empty() && pc.domain.arms.empty()) {
+    pc.domain = rectilinear_domain(sheet, pc.loops);
+    if (detail::find_hole_cuts(sheet, pc)) {
+      split_fixed_chords(sheet, pc.loops, pc.hole_cuts);
+      map_to_domain(sheet, pc);
+      pc.weights += ", cut from the holes' corners";
+    }
   }
   if (!(pc.min_jacobian > 0.0)) {
     int flipped = 0;

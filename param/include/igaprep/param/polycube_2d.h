@@ -182,6 +182,10 @@ struct Polycube2D {
   std::string weights;                   // "cotangent" or "mean value" (fallback)
   int lobes = 0;                         // lobes found on the outer loop
   bool arms_dropped = false;             // they were found, but the map was made without their arms
+  // When the map folded next to the holes' corners: sheet paths from each
+  // hole corner straight out to the first loop or earlier path met, fixed on
+  // their lines so that every part of the domain is convex (empty otherwise).
+  std::vector<std::vector<int>> hole_cuts;
   std::string arms_dropped_reason;       // why
 };
 

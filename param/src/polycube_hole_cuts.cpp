@@ -1,0 +1,172 @@
+// Cuts from the holes' corners (polycube_hole_cuts.h).
+#include "polycube_hole_cuts.h"
+
+#include <cmath>
+#include <limits>
+
+#include "edge_graph.h"
+
+namespace igaprep::param::detail {
+namespace {
+
+using Vec2 = Eigen::Vector2d;
+
+// A cut leaves a hole corner along `dir`; where its end must snap to a
+// vertex, it snaps to the `slant` side, away from the hole, so that the part
+// whose side the cut continues stays convex.
+struct CornerRay {
+  Vec2 origin, dir, slant;
+};
+
+// The pinwheel: bottom-left down, bottom-right right, top-right up, top-left left.
+std::array<CornerRay, 4> corner_rays(const Eigen::Vector4d& box) {
+  return {CornerRay{{box(0), box(1)}, {0, -1}, {-1, 0}}, CornerRay{{box(2), box(1)}, {1, 0}, {0, -1}},
+          CornerRay{{box(2), box(3)}, {0, 1}, {1, 0}}, CornerRay{{box(0), box(3)}, {-1, 0}, {0, 1}}};
+}
+
+struct Hit {
+  double t = std::numeric_limits<double>::infinity();
+  std::vector<int> candidates;  // the vertices the cut may end on
+};
+
+// 2D cross product.
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+class CutFinder {
+ public:
+  CutFinder(const mesh::TriMesh& sheet, Polycube2D& pc, const Eigen::MatrixXd& buv, const std::vector<char>& fixed)
+      : sheet_(sheet), pc_(pc), uv_(buv), blocked_(fixed), graph_(edge_graph(sheet)) {
+    scale_ = pc.domain.width + pc.domain.height;
+  }
+
+  bool cut(std::size_t hole) {
+    const PolycubeLoop& loop = pc_.loops.at(static_cast<std::size_t>(pc_.domain.hole_loop.at(hole)));
+    for (const CornerRay& ray : corner_rays(pc_.domain.holes[hole])) {
+      const int from = nearest(loop.vertices, ray.origin);
+      const Hit hit = first_hit(ray, hole);
+      const int to = end_vertex(hit, ray);
+      if (to < 0 || to == from) return false;
+      const ShortestPaths paths = shortest_paths(graph_, from, to, &blocked_);
+      if (paths.prev[static_cast<std::size_t>(to)] < 0) return false;
+      std::vector<int> path = path_to(paths, to);
+      place(path);
+      pc_.hole_cuts.push_back(std::move(path));
+    }
+    return true;
+  }
+
+ private:
+  Vec2 uv(int v) const { return uv_.row(v).transpose(); }
+
+  int nearest(const std::vector<int>& vertices, const Vec2& p) const {
+    int best = -1;
+    double best_d = std::numeric_limits<double>::infinity();
+    for (int v : vertices)
+      if (const double d = (uv(v) - p).squaredNorm(); d < best_d) best = v, best_d = d;
+    return best;
+  }
+
+  // The vertices of a loop on the line through the hit, across the ray.
+  std::vector<int> on_line(const std::vector<int>& vertices, const CornerRay& ray, const Vec2& q) const {
+    std::vector<int> out;
+    for (int v : vertices)
+      if (std::abs((uv(v) - q).dot(ray.dir)) < 1e-9 * scale_) out.push_back(v);
+    return out;
+  }
+
+  void consider(Hit& best, double t, std::vector<int> candidates) const {
+    if (t > 1e-12 * scale_ && t < best.t && !candidates.empty()) best = {t, std::move(candidates)};
+  }
+
+  Hit first_hit(const CornerRay& ray, std::size_t own) const {
+    Hit best;
+    const Vec2& o = ray.origin;
+    const Vec2& d = ray.dir;
+    const RectilinearDomain& dom = pc_.domain;
+    // The outer rectangle.
+    const double t_out = d.x() > 0 ? dom.width - o.x() : d.x() < 0 ? o.x() : d.y() > 0 ? dom.height - o.y() : o.y();
+    for (const PolycubeLoop& L : pc_.loops)
+      if (L.outer) consider(best, t_out, on_line(L.vertices, ray, o + t_out * d));
+    // Other holes: the side facing the ray, when the ray meets it.
+    const double tol = 1e-9 * scale_;
+    for (std::size_t h = 0; h < dom.holes.size(); ++h) {
+      if (h == own) continue;
+      const Eigen::Vector4d& b = dom.holes[h];
+      const bool across_u = o.x() >= b(0) - tol && o.x() <= b(2) + tol, across_v = o.y() >= b(1) - tol && o.y() <= b(3) + tol;
+      double t = -1.0;
+      if (d.y() < 0 && across_u) t = o.y() - b(3);
+      if (d.y() > 0 && across_u) t = b(1) - o.y();
+      if (d.x() > 0 && across_v) t = b(0) - o.x();
+      if (d.x() < 0 && across_v) t = o.x() - b(2);
+      if (t > 0)
+        consider(best, t, on_line(pc_.loops.at(static_cast<std::size_t>(dom.hole_loop[h])).vertices, ray, o + t * d));
+    }
+    // Earlier cuts, straight in (u, v) between their ends.
+    for (const std::vector<int>& path : pc_.hole_cuts) {
+      const Vec2 a = uv(path.front()), e = uv(path.back()) - a;
+      const double denom = cross(d, e);
+      if (std::abs(denom) < 1e-14 * scale_) continue;
+      const double t = cross(a - o, e) / denom, s = cross(a - o, d) / denom;
+      if (s >= 0.0 && s <= 1.0) consider(best, t, path);
+    }
+    return best;
+  }
+
+  // The candidate nearest the hit point on the slant side (or nearest at all).
+  int end_vertex(const Hit& hit, const CornerRay& ray) const {
+    if (hit.candidates.empty()) return -1;
+    const Vec2 q = ray.origin + hit.t * ray.dir;
+    std::vector<int> slanted;
+    for (int v : hit.candidates)
+      if ((uv(v) - q).dot(ray.slant) >= -1e-12 * scale_) slanted.push_back(v);
+    return nearest(slanted.empty() ? hit.candidates : slanted, q);
+  }
+
+  void place(const std::vector<int>& path) {
+    spread_on_segment(sheet_, path, uv(path.front()), uv(path.back()), uv_, blocked_);
+  }
+
+  const mesh::TriMesh& sheet_;
+  Polycube2D& pc_;
+  Eigen::MatrixXd uv_;
+  std::vector<char> blocked_;
+  const EdgeGraph graph_;
+  double scale_ = 1.0;
+};
+
+}  // namespace
+
+bool find_hole_cuts(const mesh::TriMesh& sheet, Polycube2D& pc) {
+  pc.hole_cuts.clear();
+  if (pc.domain.holes.empty() || !pc.domain.arms.empty()) return false;
+  pc.segments = boundary_segments(pc.loops, pc.domain);
+  std::vector<char> fixed;
+  const Eigen::MatrixXd buv = boundary_uv(sheet, pc.segments, fixed);
+  CutFinder finder(sheet, pc, buv, fixed);
+  for (std::size_t h = 0; h < pc.domain.holes.size(); ++h)
+    if (!finder.cut(h)) {
+      pc.hole_cuts.clear();
+      return false;
+    }
+  return true;
+}
+
+void spread_on_segment(const mesh::TriMesh& sheet, const std::vector<int>& path, const Eigen::Vector2d& a,
+                       const Eigen::Vector2d& b, Eigen::MatrixXd& uv, std::vector<char>& fixed) {
+  std::vector<double> s(path.size(), 0.0);
+  for (std::size_t i = 1; i < path.size(); ++i) s[i] = s[i - 1] + (sheet.V.row(path[i]) - sheet.V.row(path[i - 1])).norm();
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    const double t = s.back() > 0.0 ? s[i] / s.back() : 0.0;
+    uv.row(path[i]) = ((1.0 - t) * a + t * b).transpose();
+    fixed[static_cast<std::size_t>(path[i])] = 1;
+  }
+}
+
+void fix_hole_cuts(const mesh::TriMesh& sheet, const Polycube2D& pc, Eigen::MatrixXd& uv, std::vector<char>& fixed) {
+  for (const std::vector<int>& path : pc.hole_cuts) {
+    const Eigen::Vector2d a = uv.row(path.front()).transpose(), b = uv.row(path.back()).transpose();
+    spread_on_segment(sheet, path, a, b, uv, fixed);
+  }
+}
+
+}  // namespace igaprep::param::detail

@@ -1028,7 +1028,7 @@ void map_to_domain(const mesh::TriMesh& sheet, Polycube2D& pc) {
   std::vector<char> fixed;
   Eigen::MatrixXd buv = boundary_uv(sheet, pc.segments, fixed);
   fix_neck_paths(sheet, pc, buv, fixed);
-  detail::fix_hole_cuts(sheet, pc, buv, fixed);
+  fix_hole_cuts(sheet, pc, buv, fixed);
   for (UvWeights w : {UvWeights::Cotangent, UvWeights::MeanValue}) {
     pc.weights.clear();
     pc.uv = harmonic_uv(sheet, buv, fixed, w);
@@ -1135,6 +1135,14 @@ int split_fixed_chords(mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops,
 
 }  // namespace
 
+bool map_with_hole_cuts(mesh::TriMesh& sheet, Polycube2D& pc) {
+  if (!find_hole_cuts(sheet, pc)) return false;
+  split_fixed_chords(sheet, pc.loops, pc.hole_cuts);
+  map_to_domain(sheet, pc);
+  pc.weights += ", cut from the holes' corners";
+  return true;
+}
+
 Polycube2D polycube_2d(mesh::TriMesh& sheet, const std::vector<std::vector<int>>& loops,
                        const std::vector<Eigen::Vector3d>& corner_points, bool arms) {
   Polycube2D pc;
@@ -1169,11 +1177,7 @@ Polycube2D polycube_2d(mesh::TriMesh& sheet, const std::vector<std::vector<int>>
   // from them, each part convex (polycube_hole_cuts.h).
   if (!(pc.min_jacobian > 0.0) && !pc.domain.holes.empty() && pc.domain.arms.empty()) {
     pc.domain = rectilinear_domain(sheet, pc.loops);
-    if (detail::find_hole_cuts(sheet, pc)) {
-      split_fixed_chords(sheet, pc.loops, pc.hole_cuts);
-      map_to_domain(sheet, pc);
-      pc.weights += ", cut from the holes' corners";
-    }
+    map_with_hole_cuts(sheet, pc);
   }
   if (!(pc.min_jacobian > 0.0)) {
     int flipped = 0;

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "edge_graph.h"
+#include "igaprep/param/polycube_2d.h"
 
 namespace igaprep::param::detail {
 namespace {
@@ -136,21 +137,6 @@ class CutFinder {
 
 }  // namespace
 
-bool find_hole_cuts(const mesh::TriMesh& sheet, Polycube2D& pc) {
-  pc.hole_cuts.clear();
-  if (pc.domain.holes.empty() || !pc.domain.arms.empty()) return false;
-  pc.segments = boundary_segments(pc.loops, pc.domain);
-  std::vector<char> fixed;
-  const Eigen::MatrixXd buv = boundary_uv(sheet, pc.segments, fixed);
-  CutFinder finder(sheet, pc, buv, fixed);
-  for (std::size_t h = 0; h < pc.domain.holes.size(); ++h)
-    if (!finder.cut(h)) {
-      pc.hole_cuts.clear();
-      return false;
-    }
-  return true;
-}
-
 void spread_on_segment(const mesh::TriMesh& sheet, const std::vector<int>& path, const Eigen::Vector2d& a,
                        const Eigen::Vector2d& b, Eigen::MatrixXd& uv, std::vector<char>& fixed) {
   std::vector<double> s(path.size(), 0.0);
@@ -162,11 +148,30 @@ void spread_on_segment(const mesh::TriMesh& sheet, const std::vector<int>& path,
   }
 }
 
+}  // namespace igaprep::param::detail
+
+namespace igaprep::param {
+
+bool find_hole_cuts(const mesh::TriMesh& sheet, Polycube2D& pc) {
+  pc.hole_cuts.clear();
+  if (pc.domain.holes.empty() || !pc.domain.arms.empty()) return false;
+  pc.segments = boundary_segments(pc.loops, pc.domain);
+  std::vector<char> fixed;
+  const Eigen::MatrixXd buv = boundary_uv(sheet, pc.segments, fixed);
+  detail::CutFinder finder(sheet, pc, buv, fixed);
+  for (std::size_t h = 0; h < pc.domain.holes.size(); ++h)
+    if (!finder.cut(h)) {
+      pc.hole_cuts.clear();
+      return false;
+    }
+  return true;
+}
+
 void fix_hole_cuts(const mesh::TriMesh& sheet, const Polycube2D& pc, Eigen::MatrixXd& uv, std::vector<char>& fixed) {
   for (const std::vector<int>& path : pc.hole_cuts) {
     const Eigen::Vector2d a = uv.row(path.front()).transpose(), b = uv.row(path.back()).transpose();
-    spread_on_segment(sheet, path, a, b, uv, fixed);
+    detail::spread_on_segment(sheet, path, a, b, uv, fixed);
   }
 }
 
-}  // namespace igaprep::param::detail
+}  // namespace igaprep::param

@@ -90,6 +90,29 @@ TEST_P(Polycube, BijectiveIsoParametricAndTiled) {
   if (g == 3) EXPECT_GE(pc.rectangles.size(), 10u);  // 3 holes in a row: at least 3 x 3 + ... cells
 }
 
+// torus3's M0trim, three holes in a row, mapped with the cuts from its
+// holes' corners (the fallback where the plain map folds): 4 cuts a hole,
+// each from a hole corner, every triangle positive, the holes where they were.
+TEST(PolycubeHoleCuts, TheThreeHolesCutFromTheirCornersMapBijectively) {
+  const auto& r = cached("torus3").result;
+  igaprep::mesh::TriMesh sheet = r.m0trim.mesh;
+  Polycube2D pc = r.polycube;
+  pc.domain = rectilinear_domain(sheet, pc.loops);
+  ASSERT_TRUE(map_with_hole_cuts(sheet, pc));
+  ASSERT_EQ(pc.hole_cuts.size(), 12u);
+  for (std::size_t h = 0; h < 3; ++h)
+    for (std::size_t k = 0; k < 4; ++k) {
+      const Eigen::Vector4d& box = pc.domain.holes[h];
+      const Eigen::Vector2d start = pc.uv.row(pc.hole_cuts[4 * h + k].front()).transpose();
+      const Eigen::Vector2d corner(k == 0 || k == 3 ? box(0) : box(2), k < 2 ? box(1) : box(3));
+      EXPECT_NEAR((start - corner).norm(), 0.0, 1e-9) << "hole " << h << " cut " << k;
+      EXPECT_GE(pc.hole_cuts[4 * h + k].size(), 2u);
+    }
+  EXPECT_GT(pc.min_jacobian, 0.0) << pc.weights;
+  EXPECT_EQ(pc.jacobian.size(), sheet.F.rows());
+  EXPECT_NE(pc.weights.find("cut from the holes' corners"), std::string::npos);
+}
+
 INSTANTIATE_TEST_SUITE_P(Models, Polycube,
                          ::testing::ValuesIn(kVariants), variant_name);
 

@@ -196,6 +196,32 @@ struct Polycube2D {
 // polycube_2d then maps without arms.
 bool arms_apart(const std::vector<PolycubeLoop>& loops);
 
+// A harmonic map onto a domain with holes may fold next to the holes'
+// reflex corners. Cut from every hole corner straight out, turning the same
+// way round each hole (a pinwheel: bottom-left down, bottom-right right,
+// top-right up, top-left left), to the first thing met (the outer
+// rectangle, another hole or an earlier cut): every part of the domain is
+// then a rectangle, convex, and a convex-combination map onto each is
+// bijective (Tutte, Floater) once the cuts' sheet paths are fixed on their
+// lines.
+//
+// Finds a sheet path per hole corner into pc.hole_cuts (the corner first,
+// ending on the outer loop, a hole's loop or an earlier path), each
+// touching no boundary vertex or earlier path between its ends. For a domain
+// with holes and no arms. False (pc.hole_cuts cleared) when a cut has no path.
+bool find_hole_cuts(const mesh::TriMesh& sheet, Polycube2D& pc);
+
+// Fixes each cut's vertices on the straight line between its ends' (u, v)
+// (set before: boundary vertices, earlier cuts), spread by 3D arc length.
+void fix_hole_cuts(const mesh::TriMesh& sheet, const Polycube2D& pc, Eigen::MatrixXd& uv, std::vector<char>& fixed);
+
+// The (u, v) map with those cuts (pc.loops and pc.domain set, no arms): the
+// cuts found, interior edges between two fixed vertices split (sheet gets
+// vertices appended), u and v made as by polycube_2d. False when a cut has no
+// path (pc unchanged but its cuts cleared).
+bool map_with_hole_cuts(mesh::TriMesh& sheet, Polycube2D& pc);
+
+
 // The whole step. Inputs: sheet (M0trim, after split_boundary_ears; refined in
 // place at reflex corners, see refine_hole_corners), its boundary loops, corner
 // points (empty: automatic, with an arm per lobe when `arms`). Output: the

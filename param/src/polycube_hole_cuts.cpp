@@ -1,10 +1,13 @@
 // Cuts from the holes' corners (polycube_hole_cuts.h).
 #include "polycube_hole_cuts.h"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <limits>
 
 #include "edge_graph.h"
+#include "igaprep/core/error.h"
 #include "igaprep/param/polycube_2d.h"
 
 namespace igaprep::param::detail {
@@ -33,10 +36,20 @@ struct Hit {
 // 2D cross product.
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
+double distance_to_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 e = b - a;
+  const double len2 = e.squaredNorm();
+  const double t = len2 > 0.0 ? std::clamp((p - a).dot(e) / len2, 0.0, 1.0) : 0.0;
+  return (p - (a + t * e)).norm();
+}
+
+// Tried ends per cut: the nearest few to the hit point.
+constexpr std::size_t kEndsTried = 6;
+
 class CutFinder {
  public:
   CutFinder(const mesh::TriMesh& sheet, Polycube2D& pc, const Eigen::MatrixXd& buv, const std::vector<char>& fixed)
-      : sheet_(sheet), pc_(pc), uv_(buv), blocked_(fixed), graph_(edge_graph(sheet)) {
+      : sheet_(sheet), pc_(pc), guide_(pc.uv), uv_(buv), blocked_(fixed), graph_(edge_graph(sheet)) {
     scale_ = pc.domain.width + pc.domain.height;
   }
 
@@ -45,11 +58,15 @@ class CutFinder {
     for (const CornerRay& ray : corner_rays(pc_.domain.holes[hole])) {
       const int from = nearest(loop.vertices, ray.origin);
       const Hit hit = first_hit(ray, hole);
-      const int to = end_vertex(hit, ray);
-      if (to < 0 || to == from) return false;
-      const ShortestPaths paths = shortest_paths(graph_, from, to, &blocked_);
-      if (paths.prev[static_cast<std::size_t>(to)] < 0) return false;
-      std::vector<int> path = path_to(paths, to);
+      std::vector<int> path;
+      for (int to : end_vertices(hit, ray)) {
+        if (to == from) continue;
+        const ShortestPaths paths = shortest_paths(guided_graph(ray.origin, ray.origin + hit.t * ray.dir), from, to, &blocked_);
+        if (paths.prev[static_cast<std::size_t>(to)] < 0) continue;
+        path = path_to(paths, to);
+        break;
+      }
+      if (path.empty()) return false;
       place(path);
       pc_.hole_cuts.push_back(std::move(path));
     }
@@ -57,6 +74,20 @@ class CutFinder {
   }
 
  private:
+  // The sheet's edges weighed by their length in the plain (u, v) map plus
+  // their midpoints' distance from the cut's line there: the path follows
+  // the line where the map is sound, so the parts it bounds are those of
+  // the domain.
+  EdgeGraph guided_graph(const Vec2& a, const Vec2& b) const {
+    EdgeGraph g = graph_;
+    for (std::size_t v = 0; v < g.size(); ++v)
+      for (auto& [w, weight] : g[v]) {
+        const Vec2 p = guide_.row(static_cast<Eigen::Index>(v)).transpose(), q = guide_.row(w).transpose();
+        weight = (p - q).norm() + distance_to_segment(0.5 * (p + q), a, b);
+      }
+    return g;
+  }
+
   Vec2 uv(int v) const { return uv_.row(v).transpose(); }
 
   int nearest(const std::vector<int>& vertices, const Vec2& p) const {
@@ -113,14 +144,16 @@ class CutFinder {
     return best;
   }
 
-  // The candidate nearest the hit point on the slant side (or nearest at all).
-  int end_vertex(const Hit& hit, const CornerRay& ray) const {
-    if (hit.candidates.empty()) return -1;
+  // The candidates nearest the hit point, those on the slant side first.
+  std::vector<int> end_vertices(const Hit& hit, const CornerRay& ray) const {
     const Vec2 q = ray.origin + hit.t * ray.dir;
-    std::vector<int> slanted;
-    for (int v : hit.candidates)
-      if ((uv(v) - q).dot(ray.slant) >= -1e-12 * scale_) slanted.push_back(v);
-    return nearest(slanted.empty() ? hit.candidates : slanted, q);
+    std::vector<int> ends = hit.candidates;
+    auto key = [&](int v) {
+      return std::pair{(uv(v) - q).dot(ray.slant) < -1e-12 * scale_, (uv(v) - q).squaredNorm()};
+    };
+    std::sort(ends.begin(), ends.end(), [&](int a, int b) { return key(a) < key(b); });
+    if (ends.size() > kEndsTried) ends.resize(kEndsTried);
+    return ends;
   }
 
   void place(const std::vector<int>& path) {
@@ -129,6 +162,7 @@ class CutFinder {
 
   const mesh::TriMesh& sheet_;
   Polycube2D& pc_;
+  const Eigen::MatrixXd guide_;  // the plain map, folded only near the holes' corners
   Eigen::MatrixXd uv_;
   std::vector<char> blocked_;
   const EdgeGraph graph_;
@@ -155,6 +189,7 @@ namespace igaprep::param {
 bool find_hole_cuts(const mesh::TriMesh& sheet, Polycube2D& pc) {
   pc.hole_cuts.clear();
   if (pc.domain.holes.empty() || !pc.domain.arms.empty()) return false;
+  if (pc.uv.rows() != sheet.V.rows()) throw internal_error("hole cuts: the plain (u, v) map is not set");
   pc.segments = boundary_segments(pc.loops, pc.domain);
   std::vector<char> fixed;
   const Eigen::MatrixXd buv = boundary_uv(sheet, pc.segments, fixed);

@@ -1136,7 +1136,6 @@ int split_fixed_chords(mesh::TriMesh& m, const std::vector<PolycubeLoop>& loops,
 }  // namespace
 
 bool map_with_hole_cuts(mesh::TriMesh& sheet, Polycube2D& pc) {
-  map_to_domain(sheet, pc);  // the plain map guides the cuts
   if (!find_hole_cuts(sheet, pc)) return false;
   split_fixed_chords(sheet, pc.loops, pc.hole_cuts);
   map_to_domain(sheet, pc);

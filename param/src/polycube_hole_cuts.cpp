@@ -2,12 +2,12 @@
 #include "polycube_hole_cuts.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 #include <limits>
 
 #include "edge_graph.h"
-#include "igaprep/core/error.h"
 #include "igaprep/param/polycube_2d.h"
 
 namespace igaprep::param::detail {
@@ -43,13 +43,46 @@ double distance_to_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
   return (p - (a + t * e)).norm();
 }
 
+// A bijective map of the sheet with every hole filled by a fan round its
+// centroid, the outer loop fixed where the domain puts it: a
+// convex-combination (mean-value) map of a disk onto a convex region
+// (Floater). The holes come out as blobs about where the domain's rectangles
+// are, and the map does not fold, so paths drawn along it part the sheet as
+// the lines part the domain.
+Eigen::MatrixXd filled_guide(const mesh::TriMesh& sheet, const Polycube2D& pc, const Eigen::MatrixXd& buv) {
+  mesh::TriMesh filled = sheet;
+  std::vector<Eigen::RowVector3d> centres;
+  std::vector<std::array<int, 3>> fans;
+  for (const PolycubeLoop& L : pc.loops) {
+    if (L.outer) continue;
+    const int c = static_cast<int>(sheet.V.rows() + static_cast<Eigen::Index>(centres.size()));
+    Eigen::RowVector3d centre = Eigen::RowVector3d::Zero();
+    for (int v : L.vertices) centre += sheet.V.row(v);
+    centres.push_back(centre / static_cast<double>(L.vertices.size()));
+    // The sheet runs each boundary edge a -> b (sheet on the left); the fan runs it b -> a.
+    for (std::size_t i = 0; i < L.vertices.size(); ++i)
+      fans.push_back({L.vertices[(i + 1) % L.vertices.size()], L.vertices[i], c});
+  }
+  filled.V.conservativeResize(sheet.V.rows() + static_cast<Eigen::Index>(centres.size()), 3);
+  for (std::size_t i = 0; i < centres.size(); ++i) filled.V.row(sheet.V.rows() + static_cast<Eigen::Index>(i)) = centres[i];
+  filled.F.conservativeResize(sheet.F.rows() + static_cast<Eigen::Index>(fans.size()), 3);
+  for (std::size_t i = 0; i < fans.size(); ++i)
+    filled.F.row(sheet.F.rows() + static_cast<Eigen::Index>(i)) << fans[i][0], fans[i][1], fans[i][2];
+  std::vector<char> fixed(static_cast<std::size_t>(filled.V.rows()), 0);
+  Eigen::MatrixXd fixed_uv = Eigen::MatrixXd::Zero(filled.V.rows(), 2);
+  for (const PolycubeLoop& L : pc.loops)
+    if (L.outer)
+      for (int v : L.vertices) fixed[static_cast<std::size_t>(v)] = 1, fixed_uv.row(v) = buv.row(v);
+  return harmonic_uv(filled, fixed_uv, fixed, UvWeights::MeanValue).topRows(sheet.V.rows());
+}
+
 // Tried ends per cut: the nearest few to the hit point.
 constexpr std::size_t kEndsTried = 6;
 
 class CutFinder {
  public:
   CutFinder(const mesh::TriMesh& sheet, Polycube2D& pc, const Eigen::MatrixXd& buv, const std::vector<char>& fixed)
-      : sheet_(sheet), pc_(pc), guide_(pc.uv), uv_(buv), blocked_(fixed), graph_(edge_graph(sheet)) {
+      : sheet_(sheet), pc_(pc), guide_(filled_guide(sheet, pc, buv)), uv_(buv), blocked_(fixed), graph_(edge_graph(sheet)) {
     scale_ = pc.domain.width + pc.domain.height;
   }
 
@@ -61,7 +94,7 @@ class CutFinder {
       std::vector<int> path;
       for (int to : end_vertices(hit, ray)) {
         if (to == from) continue;
-        const ShortestPaths paths = shortest_paths(guided_graph(ray.origin, ray.origin + hit.t * ray.dir), from, to, &blocked_);
+        const ShortestPaths paths = shortest_paths(guided_graph(guide(from), guide(to)), from, to, &blocked_);
         if (paths.prev[static_cast<std::size_t>(to)] < 0) continue;
         path = path_to(paths, to);
         break;
@@ -74,21 +107,22 @@ class CutFinder {
   }
 
  private:
-  // The sheet's edges weighed by their length in the plain (u, v) map plus
-  // their midpoints' distance from the cut's line there: the path follows
-  // the line where the map is sound, so the parts it bounds are those of
-  // the domain.
+  // The sheet's edges weighed by their length in the guide plus their
+  // midpoints' distance from the segment a -> b there: the path runs
+  // straight in a map that cannot fold, so the paths part the sheet as
+  // straight lines part a plane.
   EdgeGraph guided_graph(const Vec2& a, const Vec2& b) const {
     EdgeGraph g = graph_;
     for (std::size_t v = 0; v < g.size(); ++v)
       for (auto& [w, weight] : g[v]) {
-        const Vec2 p = guide_.row(static_cast<Eigen::Index>(v)).transpose(), q = guide_.row(w).transpose();
+        const Vec2 p = guide(static_cast<int>(v)), q = guide(w);
         weight = (p - q).norm() + distance_to_segment(0.5 * (p + q), a, b);
       }
     return g;
   }
 
   Vec2 uv(int v) const { return uv_.row(v).transpose(); }
+  Vec2 guide(int v) const { return guide_.row(v).transpose(); }
 
   int nearest(const std::vector<int>& vertices, const Vec2& p) const {
     int best = -1;
@@ -162,7 +196,7 @@ class CutFinder {
 
   const mesh::TriMesh& sheet_;
   Polycube2D& pc_;
-  const Eigen::MatrixXd guide_;  // the plain map, folded only near the holes' corners
+  const Eigen::MatrixXd guide_;  // filled_guide
   Eigen::MatrixXd uv_;
   std::vector<char> blocked_;
   const EdgeGraph graph_;
@@ -189,7 +223,6 @@ namespace igaprep::param {
 bool find_hole_cuts(const mesh::TriMesh& sheet, Polycube2D& pc) {
   pc.hole_cuts.clear();
   if (pc.domain.holes.empty() || !pc.domain.arms.empty()) return false;
-  if (pc.uv.rows() != sheet.V.rows()) throw internal_error("hole cuts: the plain (u, v) map is not set");
   pc.segments = boundary_segments(pc.loops, pc.domain);
   std::vector<char> fixed;
   const Eigen::MatrixXd buv = boundary_uv(sheet, pc.segments, fixed);

@@ -208,9 +208,10 @@ bool arms_apart(const std::vector<PolycubeLoop>& loops);
 // Finds a sheet path per hole corner into pc.hole_cuts (the corner first,
 // ending on the outer loop, a hole's loop or an earlier path), each
 // touching no boundary vertex or earlier path between its ends and
-// following the cut's line in the plain map pc.uv (which must be set: it
-// folds only near the corners). For a domain with holes and no arms. False
-// (pc.hole_cuts cleared) when a cut has no path.
+// following the cut's line in a map that cannot fold (the sheet with its
+// holes filled, mapped by mean-value weights onto the outer rectangle). For
+// a domain with holes and no arms. False (pc.hole_cuts cleared) when a cut
+// has no path.
 bool find_hole_cuts(const mesh::TriMesh& sheet, Polycube2D& pc);
 
 // Fixes each cut's vertices on the straight line between its ends' (u, v)
@@ -218,7 +219,7 @@ bool find_hole_cuts(const mesh::TriMesh& sheet, Polycube2D& pc);
 void fix_hole_cuts(const mesh::TriMesh& sheet, const Polycube2D& pc, Eigen::MatrixXd& uv, std::vector<char>& fixed);
 
 // The (u, v) map with those cuts (pc.loops and pc.domain set, no arms): the
-// plain map made, the cuts found along it, interior edges between two fixed vertices split (sheet gets
+// cuts found, interior edges between two fixed vertices split (sheet gets
 // vertices appended), u and v made as by polycube_2d. False when a cut has no
 // path (pc unchanged but its cuts cleared).
 bool map_with_hole_cuts(mesh::TriMesh& sheet, Polycube2D& pc);

@@ -129,14 +129,26 @@ int collapse_short_edges(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, const std::v
   auto signed_area = [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
     return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
   };
+  auto uv_of = [&](int v) -> Eigen::Vector2d { return uv.row(v).transpose(); };
   for (Eigen::Index f = 0; f < sheet.F.rows(); ++f) {
     if (dead[f]) continue;
+    // A triangle turned over in (u, v) (two cut points a line put in the
+    // wrong order, where the map is nearly degenerate) loses its shortest
+    // (u, v) edge as if it had no length.
+    int flipped_edge = -1;
+    if (!(signed_area(uv_of(sheet.F(f, 0)), uv_of(sheet.F(f, 1)), uv_of(sheet.F(f, 2))) > 0.0)) {
+      double shortest = std::numeric_limits<double>::infinity();
+      for (int k = 0; k < 3; ++k)
+        if (const double l = (uv.row(sheet.F(f, k)) - uv.row(sheet.F(f, (k + 1) % 3))).norm(); l < shortest)
+          shortest = l, flipped_edge = k;
+    }
     for (int k = 0; k < 3 && !dead[f]; ++k) {
       int keep = sheet.F(f, k), drop = sheet.F(f, (k + 1) % 3);
       // An edge of no length in (u, v) (two cut points that the line put at
       // one place, where the map is nearly degenerate) goes whatever its 3D
       // length and pins: its triangles have no area in (u, v).
-      const bool same_uv = (uv.row(keep) - uv.row(drop)).norm() <= 1e-12 * (1.0 + uv.row(keep).norm());
+      const bool same_uv =
+          k == flipped_edge || (uv.row(keep) - uv.row(drop)).norm() <= 1e-12 * (1.0 + uv.row(keep).norm());
       if (!same_uv && (sheet.V.row(keep) - sheet.V.row(drop)).norm() >= min_length) continue;
       if (!same_uv && pinned[drop] && pinned[keep]) continue;
       if (pinned[drop]) std::swap(keep, drop);

@@ -243,6 +243,26 @@ TEST(CollapseShortEdges, AnEdgeOfNoLengthInUVGoesEvenBetweenPins) {
   EXPECT_EQ(describe_sheet_problem(analyze_sheet(m.F, m.V.rows()), 1, "collapsed grid"), "");
 }
 
+// Two pinned vertices a hundredth of h apart in (u, v) but in the wrong
+// order (cut points a line put past each other where the map is nearly
+// degenerate), their 3D distance above the threshold: the two triangles of
+// their edge are turned over, and the edge goes.
+TEST(CollapseShortEdges, TheShortestEdgeOfATriangleTurnedOverGoesEvenBetweenPins) {
+  const int n = 6;
+  const double h = 1.0 / n;
+  auto id = [&](int i, int j) { return i + (n + 1) * j; };
+  mesh::TriMesh m = param_test::square_tris(n);
+  const int P = id(2, 2), Q = id(3, 2);
+  Eigen::MatrixXd uv = m.V.leftCols(2);
+  uv.row(P) = uv.row(Q) + Eigen::RowVector2d(0.01 * h, 0.0);  // P's (u, v) just past Q's
+  ASSERT_LT(min_uv_area(m, uv), 0.0);
+  std::vector<char> pin(static_cast<std::size_t>(m.V.rows()), 0);
+  pin[static_cast<std::size_t>(P)] = pin[static_cast<std::size_t>(Q)] = 1;
+  EXPECT_EQ(collapse_short_edges(m, uv, pin, 0.1 * h), 1);
+  EXPECT_GT(min_uv_area(m, uv), 0.0);
+  EXPECT_EQ(describe_sheet_problem(analyze_sheet(m.F, m.V.rows()), 1, "collapsed grid"), "");
+}
+
 TEST(SmoothSheet, FlattensBumpsKeepsFixedAndPlanar) {
   mesh::TriMesh flat = param_test::square_tris(8, 0.2, 4);
   std::vector<char> fixed(static_cast<std::size_t>(flat.V.rows()), 0);

@@ -45,7 +45,8 @@ double narrowest_band(const RectilinearDomain& domain);
 // Collapses every edge shorter than min_length (3D) whose triangles stay
 // positively oriented in (u, v) after moving one end onto the other; a
 // pinned vertex is never moved, except onto a vertex at the same (u, v):
-// an edge of no length in (u, v) is collapsed whatever its 3D length.
+// an edge of no length in (u, v) is collapsed whatever its 3D length, and
+// so is the shortest (u, v) edge of a triangle turned over in (u, v).
 // Returns the number of edges collapsed.
 int collapse_short_edges(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, const std::vector<char>& pinned, double min_length);
 

@@ -86,7 +86,9 @@ class CutFinder {
     scale_ = pc.domain.width + pc.domain.height;
   }
 
-  bool cut(std::size_t hole) {
+  // The cuts from the hole's four corners; a corner whose cut finds no path
+  // (the parts of the sheet are not those of the domain there) is left.
+  void cut(std::size_t hole) {
     const PolycubeLoop& loop = pc_.loops.at(static_cast<std::size_t>(pc_.domain.hole_loop.at(hole)));
     for (const CornerRay& ray : corner_rays(pc_.domain.holes[hole])) {
       const int from = nearest(loop.vertices, ray.origin);
@@ -99,11 +101,10 @@ class CutFinder {
         path = path_to(paths, to);
         break;
       }
-      if (path.empty()) return false;
+      if (path.empty()) continue;
       place(path);
       pc_.hole_cuts.push_back(std::move(path));
     }
-    return true;
   }
 
  private:
@@ -227,12 +228,8 @@ bool find_hole_cuts(const mesh::TriMesh& sheet, Polycube2D& pc) {
   std::vector<char> fixed;
   const Eigen::MatrixXd buv = boundary_uv(sheet, pc.segments, fixed);
   detail::CutFinder finder(sheet, pc, buv, fixed);
-  for (std::size_t h = 0; h < pc.domain.holes.size(); ++h)
-    if (!finder.cut(h)) {
-      pc.hole_cuts.clear();
-      return false;
-    }
-  return true;
+  for (std::size_t h = 0; h < pc.domain.holes.size(); ++h) finder.cut(h);
+  return !pc.hole_cuts.empty();
 }
 
 void fix_hole_cuts(const mesh::TriMesh& sheet, const Polycube2D& pc, Eigen::MatrixXd& uv, std::vector<char>& fixed) {

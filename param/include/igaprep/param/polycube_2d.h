@@ -209,9 +209,9 @@ bool arms_apart(const std::vector<PolycubeLoop>& loops);
 // ending on the outer loop, a hole's loop or an earlier path), each
 // touching no boundary vertex or earlier path between its ends and
 // following the cut's line in a map that cannot fold (the sheet with its
-// holes filled, mapped by mean-value weights onto the outer rectangle). For
-// a domain with holes and no arms. False (pc.hole_cuts cleared) when a cut
-// has no path.
+// holes filled, mapped by mean-value weights onto the outer rectangle). A
+// corner whose cut finds no path is left uncut. For a domain with holes and
+// no arms. False when no cut was found.
 bool find_hole_cuts(const mesh::TriMesh& sheet, Polycube2D& pc);
 
 // Fixes each cut's vertices on the straight line between its ends' (u, v)
@@ -220,8 +220,8 @@ void fix_hole_cuts(const mesh::TriMesh& sheet, const Polycube2D& pc, Eigen::Matr
 
 // The (u, v) map with those cuts (pc.loops and pc.domain set, no arms): the
 // cuts found, interior edges between two fixed vertices split (sheet gets
-// vertices appended), u and v made as by polycube_2d. False when a cut has no
-// path (pc unchanged but its cuts cleared).
+// vertices appended), u and v made as by polycube_2d. False when no cut was
+// found (pc unchanged).
 bool map_with_hole_cuts(mesh::TriMesh& sheet, Polycube2D& pc);
 
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <unordered_map>
 #include <vector>
@@ -153,7 +154,8 @@ Eigen::VectorXd links_with(const Eigen::MatrixXd& loop, const std::vector<Eigen:
 // the sampled points come along.
 class BasePoints {
  public:
-  BasePoints(const SurfaceGraph& g, int first) : g_(g), nearest_(g.adjacency.size(), INFINITY), next_(first) {}
+  BasePoints(const SurfaceGraph& g, int first)
+      : g_(g), nearest_(g.adjacency.size(), std::numeric_limits<double>::infinity()), next_(first) {}
   detail::ShortestPaths next() {
     detail::ShortestPaths tree = detail::shortest_paths(g_.adjacency, next_);
     for (std::size_t v = 0; v < nearest_.size(); ++v) nearest_[v] = std::min(nearest_[v], tree.dist[v]);

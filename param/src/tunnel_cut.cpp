@@ -52,23 +52,35 @@ Eigen::MatrixXi loop_sides(const mesh::TriMesh& m, const std::vector<std::vector
 // along them (no coupling across a loop edge) and, with plate pairs, the
 // thin sides' pull of each pair to opposite values. One factorisation, then
 // one solve per choice of signs.
+// T1's faces as a graph with the loops' sides: what every field shares.
+struct CutSurface {
+  detail::FaceGeometry geometry;
+  std::vector<detail::FaceEdge> edges;
+  Eigen::MatrixXi sides;  // loop_sides
+  std::unordered_set<std::uint64_t> loop_edges;
+};
+
+CutSurface cut_surface(const mesh::TriMesh& m, const std::vector<std::vector<int>>& loops) {
+  CutSurface s{detail::face_geometry(m), detail::face_neighbours(m), loop_sides(m, loops), {}};
+  for (const auto& loop : loops)
+    for (std::size_t k = 0; k < loop.size(); ++k) s.loop_edges.insert(edge_key(loop[k], loop[(k + 1) % loop.size()]));
+  return s;
+}
+
 class SideField {
  public:
-  SideField(const mesh::TriMesh& m, const std::vector<std::vector<int>>& loops,
-            const std::vector<detail::PlatePair>& pairs, double max_distance)
-      : geometry_(detail::face_geometry(m)), edges_(detail::face_neighbours(m)), sides_(loop_sides(m, loops)) {
-    std::unordered_set<std::uint64_t> loop_edges;
-    for (const auto& loop : loops)
-      for (std::size_t k = 0; k < loop.size(); ++k) loop_edges.insert(edge_key(loop[k], loop[(k + 1) % loop.size()]));
-    const Eigen::Index nf = m.F.rows();
+  SideField(const CutSurface& surface, const std::vector<detail::PlatePair>& pairs, double max_distance)
+      : sides_(surface.sides) {
+    const detail::FaceGeometry& geometry = surface.geometry;
+    const Eigen::Index nf = sides_.rows();
     free_.assign(static_cast<std::size_t>(nf), -1);
     int nfree = 0;
     for (Eigen::Index f = 0; f < nf; ++f)
       if (sides_.row(f).isZero()) free_[static_cast<std::size_t>(f)] = nfree++;
     std::vector<Eigen::Triplet<double>> a, b;
-    for (const detail::FaceEdge& e : edges_) {
-      if (loop_edges.count(edge_key(e.u, e.v))) continue;
-      const double w = detail::neighbour_weight(geometry_, e, kSharpness) + 1e-12;
+    for (const detail::FaceEdge& e : surface.edges) {
+      if (surface.loop_edges.count(edge_key(e.u, e.v))) continue;
+      const double w = detail::neighbour_weight(geometry, e, kSharpness) + 1e-12;
       for (const auto& [p, q] : {std::pair{e.a, e.b}, std::pair{e.b, e.a}}) {
         const int i = free_[static_cast<std::size_t>(p)], j = free_[static_cast<std::size_t>(q)];
         if (i < 0) continue;
@@ -79,7 +91,7 @@ class SideField {
     }
     for (const detail::PlatePair& p : pairs) {
       if (p.distance > max_distance) continue;
-      const double w = geometry_.area(p.face) / (p.distance * p.distance);
+      const double w = geometry.area(p.face) / (p.distance * p.distance);
       for (const auto& [f, g] : {std::pair{p.face, p.opposite}, std::pair{p.opposite, p.face}}) {
         const int i = free_[static_cast<std::size_t>(f)], j = free_[static_cast<std::size_t>(g)];
         if (i < 0) continue;
@@ -106,13 +118,8 @@ class SideField {
     return x;
   }
 
-  const detail::FaceGeometry& geometry() const { return geometry_; }
-  const std::vector<detail::FaceEdge>& edges() const { return edges_; }
-
  private:
-  detail::FaceGeometry geometry_;
-  std::vector<detail::FaceEdge> edges_;
-  Eigen::MatrixXi sides_;
+  const Eigen::MatrixXi& sides_;
   std::vector<int> free_;
   Eigen::SparseMatrix<double> coupling_;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver_;
@@ -131,20 +138,21 @@ std::string describe(const std::vector<std::vector<int>>& loops, const Eigen::Ve
 std::vector<CutLoops> tunnel_loop_cuts(const mesh::TriMesh& T1, const std::vector<std::vector<int>>& loops,
                                        const std::string& name, std::vector<std::string>& refusals) {
   if (loops.empty()) throw internal_error("tunnel cut: no loops");
-  const std::vector<detail::PlatePair> pairs = detail::plate_pairs(T1, detail::face_geometry(T1));
+  const CutSurface surface = cut_surface(T1, loops);
+  const std::vector<detail::PlatePair> pairs = detail::plate_pairs(T1, surface.geometry);
   const double max_distance = pairs.empty() ? 0.0 : kThinFactor * detail::median_distance(pairs);
   const int choices = loops.size() > 7 ? kMaxSignChoices : std::min(1 << (loops.size() - 1), kMaxSignChoices);
   std::vector<CutLoops> valid;
   for (const bool thin : {false, true}) {
     if (thin && pairs.empty()) break;
-    const SideField field(T1, loops, thin ? pairs : std::vector<detail::PlatePair>{}, max_distance);
+    const SideField field(surface, thin ? pairs : std::vector<detail::PlatePair>{}, max_distance);
     for (int choice = 0; choice < choices; ++choice) {
       Eigen::VectorXi signs = Eigen::VectorXi::Ones(static_cast<Eigen::Index>(loops.size()));
       for (std::size_t l = 1; l < loops.size(); ++l)
         if (choice & (1 << (l - 1))) signs(static_cast<Eigen::Index>(l)) = -1;
       const std::string source = describe(loops, signs, thin);
       Eigen::VectorXd x = field.solve(signs);
-      detail::give_small_pieces_away(field.edges(), field.geometry().area, x);
+      detail::give_small_pieces_away(surface.edges, surface.geometry.area, x);
       const Eigen::VectorXi face_side = x.unaryExpr([](double v) { return v < 0.0 ? -1 : 1; });
       try {
         CutLoops edges = validate_cut(T1, face_side, name, source);

@@ -223,44 +223,43 @@ TEST(CollapseShortEdges, OneShortEdgeOnAGrid) {
   }
 }
 
+// A 6 x 6 grid with two neighbouring vertices P and Q pinned and P's (u, v)
+// moved by `uv_shift` from Q's; the threshold in the tests is 0.1 h.
+struct PinnedPair {
+  static constexpr int n = 6;
+  static constexpr double h = 1.0 / n;
+  mesh::TriMesh m = param_test::square_tris(n);
+  const int P = 2 + (n + 1) * 2, Q = 3 + (n + 1) * 2;
+  Eigen::MatrixXd uv = m.V.leftCols(2);
+  std::vector<char> pin = std::vector<char>(static_cast<std::size_t>(m.V.rows()), 0);
+  explicit PinnedPair(const Eigen::RowVector2d& uv_shift) {
+    uv.row(P) = uv.row(Q) + uv_shift;
+    pin[static_cast<std::size_t>(P)] = pin[static_cast<std::size_t>(Q)] = 1;
+  }
+};
+
 // Two pinned vertices at one (u, v) (cut points that a line put at one place
 // where the map is nearly degenerate), 0.3 h apart in 3D with the threshold
 // below that: their edge still goes, else its triangles have no (u, v) area.
 TEST(CollapseShortEdges, AnEdgeOfNoLengthInUVGoesEvenBetweenPins) {
-  const int n = 6;
-  const double h = 1.0 / n;
-  auto id = [&](int i, int j) { return i + (n + 1) * j; };
-  mesh::TriMesh m = param_test::square_tris(n);
-  const int P = id(2, 2), Q = id(3, 2);
-  Eigen::MatrixXd uv = m.V.leftCols(2);
-  uv.row(P) = uv.row(Q);           // P's (u, v) on Q's, P's 3D where it was
-  m.V(P, 0) = m.V(Q, 0) - 0.3 * h;  // and 0.3 h from Q in 3D
-  ASSERT_EQ(min_uv_area(m, uv), 0.0);
-  std::vector<char> pin(static_cast<std::size_t>(m.V.rows()), 0);
-  pin[static_cast<std::size_t>(P)] = pin[static_cast<std::size_t>(Q)] = 1;
-  EXPECT_EQ(collapse_short_edges(m, uv, pin, 0.1 * h), 1);
-  EXPECT_GT(min_uv_area(m, uv), 0.0);
-  EXPECT_EQ(describe_sheet_problem(analyze_sheet(m.F, m.V.rows()), 1, "collapsed grid"), "");
+  PinnedPair g(Eigen::RowVector2d::Zero());          // P's (u, v) on Q's, P's 3D where it was
+  g.m.V(g.P, 0) = g.m.V(g.Q, 0) - 0.3 * PinnedPair::h;  // and 0.3 h from Q in 3D
+  ASSERT_EQ(min_uv_area(g.m, g.uv), 0.0);
+  EXPECT_EQ(collapse_short_edges(g.m, g.uv, g.pin, 0.1 * PinnedPair::h), 1);
+  EXPECT_GT(min_uv_area(g.m, g.uv), 0.0);
+  EXPECT_EQ(describe_sheet_problem(analyze_sheet(g.m.F, g.m.V.rows()), 1, "collapsed grid"), "");
 }
 
 // Two pinned vertices a hundredth of h apart in (u, v) but in the wrong
 // order (cut points a line put past each other where the map is nearly
-// degenerate), their 3D distance above the threshold: the two triangles of
-// their edge are turned over, and the edge goes.
+// degenerate), their 3D distance h, above the threshold: the two triangles
+// of their edge are turned over, and the edge goes.
 TEST(CollapseShortEdges, TheShortestEdgeOfATriangleTurnedOverGoesEvenBetweenPins) {
-  const int n = 6;
-  const double h = 1.0 / n;
-  auto id = [&](int i, int j) { return i + (n + 1) * j; };
-  mesh::TriMesh m = param_test::square_tris(n);
-  const int P = id(2, 2), Q = id(3, 2);
-  Eigen::MatrixXd uv = m.V.leftCols(2);
-  uv.row(P) = uv.row(Q) + Eigen::RowVector2d(0.01 * h, 0.0);  // P's (u, v) just past Q's
-  ASSERT_LT(min_uv_area(m, uv), 0.0);
-  std::vector<char> pin(static_cast<std::size_t>(m.V.rows()), 0);
-  pin[static_cast<std::size_t>(P)] = pin[static_cast<std::size_t>(Q)] = 1;
-  EXPECT_EQ(collapse_short_edges(m, uv, pin, 0.1 * h), 1);
-  EXPECT_GT(min_uv_area(m, uv), 0.0);
-  EXPECT_EQ(describe_sheet_problem(analyze_sheet(m.F, m.V.rows()), 1, "collapsed grid"), "");
+  PinnedPair g(Eigen::RowVector2d(0.01 * PinnedPair::h, 0.0));  // P's (u, v) just past Q's
+  ASSERT_LT(min_uv_area(g.m, g.uv), 0.0);
+  EXPECT_EQ(collapse_short_edges(g.m, g.uv, g.pin, 0.1 * PinnedPair::h), 1);
+  EXPECT_GT(min_uv_area(g.m, g.uv), 0.0);
+  EXPECT_EQ(describe_sheet_problem(analyze_sheet(g.m.F, g.m.V.rows()), 1, "collapsed grid"), "");
 }
 
 TEST(SmoothSheet, FlattensBumpsKeepsFixedAndPlanar) {

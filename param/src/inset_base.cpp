@@ -18,9 +18,10 @@
 
 namespace igaprep::param {
 
-int split_sheet_along_line(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, int axis, double c, double snap) {
+int split_sheet_along_line(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, int axis, double c, double snap,
+                           const std::vector<char>& unsnapped) {
   for (Eigen::Index v = 0; v < uv.rows(); ++v)
-    if (std::abs(uv(v, axis) - c) < snap) uv(v, axis) = c;
+    if (std::abs(uv(v, axis) - c) < snap && !(v < static_cast<Eigen::Index>(unsnapped.size()) && unsnapped[v])) uv(v, axis) = c;
 
   std::vector<Eigen::Vector3d> P;
   std::vector<Eigen::Vector2d> Q;
@@ -152,9 +153,13 @@ int collapse_short_edges(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, const std::v
       if (!same_uv && (sheet.V.row(keep) - sheet.V.row(drop)).norm() >= min_length) continue;
       if (!same_uv && pinned[drop] && pinned[keep]) continue;
       if (pinned[drop]) std::swap(keep, drop);
-      // Moving `drop` onto `keep` must not fold any surviving triangle in (u, v).
+      // Moving `drop` onto `keep` must not fold any surviving triangle in
+      // (u, v); onto a vertex at the same (u, v) it changes none (whatever
+      // triangles of no area there are about it).
+      const bool same_place = (uv.row(keep) - uv.row(drop)).norm() == 0.0;
       bool ok = true;
       for (int g : faces_of[drop]) {
+        if (same_place) break;
         if (dead[g]) continue;
         bool has_keep = false;
         Eigen::Vector2d p[3];
@@ -248,7 +253,14 @@ InsetBase inset_base_surface(const mesh::TriMesh& sheet, const Polycube2D& polyc
       for (Eigen::Index v = 0; v < out.uv.rows(); ++v) gap = std::min(gap, std::abs(out.uv(v, axis) - trial));
       if (gap > best_gap) best_gap = gap, best = trial;
     }
-    split_sheet_along_line(out.mesh, out.uv, axis, best, snap);
+    // A vertex on a line placed before stays there: snapped onto a line
+    // next to it (two holes' sides a band apart where the map squeezes) it
+    // would leave triangles of no area between the two.
+    std::vector<char> on_placed(static_cast<std::size_t>(out.uv.rows()), 0);
+    for (const auto& [key, value] : placed)
+      if (key.first == axis)
+        for (Eigen::Index v = 0; v < out.uv.rows(); ++v) on_placed[static_cast<std::size_t>(v)] |= out.uv(v, axis) == value;
+    split_sheet_along_line(out.mesh, out.uv, axis, best, snap, on_placed);
     placed[{axis, c}] = best;
     return best;
   };

@@ -18,13 +18,6 @@ bool only_resolution_failed(const iga_check::CheckReport& r) {
   });
 }
 
-// Folded sample cells per cell of a block's face (kRetryFoldedShare).
-double folded_share(const param::VolumeParam& vp) {
-  const double m = static_cast<double>(vp.params.size());
-  const double face_cells = static_cast<double>(vp.blocks.size()) * (m - 1.0) * (m - 1.0);
-  return face_cells > 0.0 ? vp.folded_cells / face_cells : 0.0;
-}
-
 // The largest |value| / limit of the fidelity and volume criteria.
 double largest_excess(const iga_check::CheckReport& r) {
   double worst = 0.0;
@@ -35,6 +28,20 @@ double largest_excess(const iga_check::CheckReport& r) {
 }
 
 }  // namespace
+
+double folded_sample_share(const param::VolumeParam& vp) {
+  const double m = static_cast<double>(vp.params.size());
+  const double face_cells = static_cast<double>(vp.blocks.size()) * (m - 1.0) * (m - 1.0);
+  return face_cells > 0.0 ? vp.folded_cells / face_cells : 0.0;
+}
+
+std::string repair_skip_reason(const param::VolumeParam& vp) {
+  const double share = folded_sample_share(vp);
+  if (!(share > kRepairFoldedShare)) return "";
+  return text("the blocks' folded sample cells are %.1f %% of their face cells (more than %.0f %%): the folds are in "
+              "the fitted samples, which moving control points cannot undo; the check says where",
+              100.0 * share, 100.0 * kRepairFoldedShare);
+}
 
 FitRetryDecision decide_fit_retry(const Check& check, const param::VolumeParam& vp, int elements,
                                   const CaseFitRetry& settings) {
@@ -53,7 +60,7 @@ FitRetryDecision decide_fit_retry(const Check& check, const param::VolumeParam& 
                     settings.max_elements);
     return d;
   }
-  const double share = folded_share(vp);
+  const double share = folded_sample_share(vp);
   if (share > kRetryFoldedShare) {
     d.reason = text("the blocks' folded sample cells are %.2f %% of their face cells (more than %.1f %%): a finer fit "
                     "would follow the folds",

@@ -1,5 +1,6 @@
 #include "igaprep/iga_check/surface_fit_pairs.h"
 #include "igaprep/param/surface_projector.h"
+#include "igaprep/pipeline/fit_retry.h"
 #include "igaprep/pipeline/volume.h"
 #include "igaprep/spline/block_fit.h"
 #include "igaprep/spline/find_interfaces.h"
@@ -115,7 +116,11 @@ Fit fit_stage(const Case& c, const Surfaces& surfaces, const Decomposition& d, c
                              r.stop_reason.c_str()));
   };
   if (c.surface_fit.iterations > 0) fit_to_surfaces();
-  if (c.jacobian.target > 0.0) repair();
+  if (c.jacobian.target > 0.0) {
+    const std::string skip = repair_skip_reason(vp);
+    if (skip.empty()) repair();
+    else s.details.push_back("Jacobian repair skipped: " + skip);
+  }
   s.seconds = timer.seconds();
   observer.stage_finished(s);
   return out;

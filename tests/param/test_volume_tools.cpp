@@ -170,6 +170,24 @@ TEST(SplitSheetAlongLine, LineThroughVerticesAndSnap) {
   EXPECT_NEAR(uv_area(m2, uv2), 1.0, 1e-12);
 }
 
+// A second line half a snap beyond one already cut: the first line's
+// vertices stay on it when flagged (else they snap onto the second and
+// the triangles between the two lose their area), and the second is cut.
+TEST(SplitSheetAlongLine, FlaggedVerticesStayOnTheirLine) {
+  mesh::TriMesh m = param_test::square_tris(6);
+  Eigen::MatrixXd uv = m.V.leftCols(2);
+  const double first = 2.0 / 6.0, second = first + 5e-4;
+  std::vector<char> on_first(static_cast<std::size_t>(uv.rows()), 0);
+  for (Eigen::Index v = 0; v < uv.rows(); ++v) on_first[static_cast<std::size_t>(v)] = uv(v, 0) == first;
+  EXPECT_EQ(split_sheet_along_line(m, uv, 0, second, 1e-3, on_first), 13);  // 7 rows and 6 diagonals
+  int still_on_first = 0;
+  for (Eigen::Index v = 0; v < static_cast<Eigen::Index>(on_first.size()); ++v) still_on_first += uv(v, 0) == first;
+  EXPECT_EQ(still_on_first, 7);
+  EXPECT_GT(min_uv_area(m, uv), 0.0);
+  EXPECT_NEAR(uv_area(m, uv), 1.0, 1e-12);
+  EXPECT_EQ(describe_sheet_problem(analyze_sheet(m.F, m.V.rows()), 1, "twice cut grid"), "");
+}
+
 // ---------------------------------------------------------------- collapse_short_edges, smooth_sheet
 
 TEST(CollapseShortEdges, OneShortEdgeOnAGrid) {
@@ -260,6 +278,29 @@ TEST(CollapseShortEdges, TheShortestEdgeOfATriangleTurnedOverGoesEvenBetweenPins
   EXPECT_EQ(collapse_short_edges(g.m, g.uv, g.pin, 0.1 * PinnedPair::h), 1);
   EXPECT_GT(min_uv_area(g.m, g.uv), 0.0);
   EXPECT_EQ(describe_sheet_problem(analyze_sheet(g.m.F, g.m.V.rows()), 1, "collapsed grid"), "");
+}
+
+// Three vertices at one (u, v), 3D apart (cut points where two lines cross
+// and the map squeezes to a point, as between the genus-4 statuette's
+// stacked holes), joined by triangles of no area: each of those is next to
+// another one, so no single move was taken before. All three become one.
+TEST(CollapseShortEdges, ThreeVerticesAtOnePlaceBecomeOne) {
+  mesh::TriMesh m;
+  m.V.resize(7, 3);
+  m.V << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0.5, 0.4, 0.0, 0.6, 0.5, 0.1, 0.5, 0.6, -0.1;  // A B C D, P Q R
+  Eigen::MatrixXd uv = m.V.leftCols(2);
+  for (int v = 4; v < 7; ++v) uv.row(v) << 0.5, 0.5;
+  const int A = 0, B = 1, C = 2, D = 3, P = 4, Q = 5, R = 6;
+  m.F.resize(8, 3);
+  m.F << A, B, P, B, C, Q, C, D, R, D, A, R,  // the fan about the centre
+      B, Q, P, C, R, Q, A, P, R, P, Q, R;     // no area
+  ASSERT_EQ(describe_sheet_problem(analyze_sheet(m.F, m.V.rows()), 1, "the fan"), "");
+  const std::vector<char> pinned(7, 1);
+  EXPECT_EQ(collapse_short_edges(m, uv, pinned, 1e-3), 2);
+  EXPECT_EQ(m.F.rows(), 4);
+  EXPECT_GT(min_uv_area(m, uv), 0.0);
+  EXPECT_NEAR(uv_area(m, uv), 1.0, 1e-15);
+  EXPECT_EQ(describe_sheet_problem(analyze_sheet(m.F, m.V.rows()), 1, "collapsed fan"), "");
 }
 
 TEST(SmoothSheet, FlattensBumpsKeepsFixedAndPlanar) {

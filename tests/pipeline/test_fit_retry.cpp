@@ -50,6 +50,16 @@ VolumeParam sampled(int blocks, int folded) {
   return vp;
 }
 
+// The Jacobian repair is skipped only where more than a fifth of the face
+// cells are folded: 168 blocks of 144 face cells, 24,192 cells in all.
+TEST(FitRetry, TheRepairIsSkippedOnlyOnSamplesFoldedInMoreThanAFifthOfTheirCells) {
+  EXPECT_NEAR(igaprep::pipeline::folded_sample_share(sampled(168, 4838)), 4838.0 / 24192.0, 1e-15);
+  EXPECT_EQ(igaprep::pipeline::repair_skip_reason(sampled(168, 4838)), "");  // 20.0 %
+  EXPECT_EQ(igaprep::pipeline::repair_skip_reason(sampled(168, 0)), "");
+  const std::string why = igaprep::pipeline::repair_skip_reason(sampled(168, 4839));  // 20.003 %
+  EXPECT_NE(why.find("20.0 % of their face cells (more than 20 %)"), std::string::npos) << why;
+}
+
 TEST(FitRetry, AResolutionFailureWithSoundSamplesIsRefittedOneAndAHalfTimesFiner) {
   const CaseFitRetry settings;  // up to 12 per direction, 200,000 elements
   const auto d = decide_fit_retry(check_failing({"jacobian", "fidelity"}, 1), sampled(168, 148), 6, settings);

@@ -35,8 +35,10 @@ bool sheet_self_intersects(const mesh::TriMesh& sheet, const std::string& name);
 // every triangle that the line uv(axis) = c crosses (orientation kept; new
 // vertices interpolated in 3D and (u, v) along the crossing edges, shared by
 // the two triangles of an edge). Vertices within snap of the line are put on
-// it in (u, v) first (no slivers). Returns the number of edges split.
-int split_sheet_along_line(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, int axis, double c, double snap);
+// it in (u, v) first (no slivers), except those flagged in `unsnapped`
+// (vertices on another line). Returns the number of edges split.
+int split_sheet_along_line(mesh::TriMesh& sheet, Eigen::MatrixXd& uv, int axis, double c, double snap,
+                           const std::vector<char>& unsnapped = {});
 
 // The narrowest band of a domain: its width, its height, the gaps between
 // holes and between a hole and the outside.

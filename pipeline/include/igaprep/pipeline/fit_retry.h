@@ -27,6 +27,21 @@ namespace igaprep::pipeline {
 // direction; the propeller 6.2 % at 4 and 11 % at 8; the pelvis 31 % at 6).
 constexpr double kRetryFoldedShare = 0.01;
 
+// Folded sample cells above this share of the blocks' face cells say the
+// Jacobian repair cannot certify the model: the folds are in the data it
+// fits, and it moves control points within a neighbour distance. Below it
+// the repair pays (the propeller at 6.2 %: 841 -> 300 negative elements);
+// above it, it only costs (the pelvis at 31 %: more than 40 minutes, stopped
+// by hand, docs/validation.md; the genus-4 statuette).
+constexpr double kRepairFoldedShare = 0.2;
+
+// Folded sample cells per cell of a block's face.
+double folded_sample_share(const param::VolumeParam& vp);
+
+// Why the Jacobian repair is not worth making on these samples (more than
+// kRepairFoldedShare of their face cells folded), or "" when it is.
+std::string repair_skip_reason(const param::VolumeParam& vp);
+
 struct FitRetryDecision {
   bool retry = false;
   int elements = 0;    // per direction for the next attempt (when retry)

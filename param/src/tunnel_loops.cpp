@@ -10,7 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "igaprep/core/edge_key.h"
@@ -18,6 +18,7 @@
 #include "igaprep/core/union_find.h"
 #include "igaprep/param/tunnel_loops.h"
 #include "edge_graph.h"
+#include "face_graph.h"
 
 namespace igaprep::param {
 namespace {
@@ -41,16 +42,11 @@ double segment_pair_angle(const V3& a0, const V3& a1, const V3& b0, const V3& b1
   return orientation > 0.0 ? omega : (orientation < 0.0 ? -omega : 0.0);
 }
 
-struct Edge {
-  int u, v;
-  double length;
-  int f0 = -1, f1 = -1;  // the two faces
-};
+using Edge = detail::FaceEdge;  // faces a and b, vertices u and v
 
 struct SurfaceGraph {
   detail::EdgeGraph adjacency;
   std::vector<Edge> edges;
-  std::unordered_map<std::uint64_t, int> edge_of;
   Eigen::MatrixXd normal;  // per vertex, area-weighted
   double mean_edge = 0.0;
 };
@@ -62,14 +58,12 @@ SurfaceGraph surface_graph(const mesh::TriMesh& m) {
   for (int f = 0; f < static_cast<int>(m.F.rows()); ++f) {
     const V3 a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
     const V3 n = (b - a).cross(c - a);
-    for (int k = 0; k < 3; ++k) {
-      g.normal.row(m.F(f, k)) += n.transpose();
-      const int u = m.F(f, k), v = m.F(f, (k + 1) % 3);
-      const auto [it, inserted] = g.edge_of.emplace(edge_key(u, v), static_cast<int>(g.edges.size()));
-      if (inserted) g.edges.push_back({u, v, (m.V.row(u) - m.V.row(v)).norm(), f});
-      else g.edges[static_cast<std::size_t>(it->second)].f1 = f;
-    }
+    for (int k = 0; k < 3; ++k) g.normal.row(m.F(f, k)) += n.transpose();
   }
+  // Each edge as its first face has it (face_neighbours gives the second's):
+  // the loops then run the way they always did.
+  g.edges = detail::face_neighbours(m);
+  for (Edge& e : g.edges) std::swap(e.u, e.v);
   g.normal.rowwise().normalize();
   for (const Edge& e : g.edges) g.mean_edge += e.length;
   g.mean_edge /= static_cast<double>(std::max<std::size_t>(g.edges.size(), 1));
@@ -111,19 +105,25 @@ std::vector<Candidate> generators_through(const mesh::TriMesh& m, const SurfaceG
   for (int i = 0; i < static_cast<int>(g.edges.size()); ++i) {
     const Edge& e = g.edges[static_cast<std::size_t>(i)];
     if (tree.prev[static_cast<std::size_t>(e.u)] == e.v || tree.prev[static_cast<std::size_t>(e.v)] == e.u) continue;
-    if (e.f1 < 0) continue;
     dual.push_back(i);
   }
   auto loop_length = [&](int i) {
     const Edge& e = g.edges[static_cast<std::size_t>(i)];
     return tree.dist[static_cast<std::size_t>(e.u)] + tree.dist[static_cast<std::size_t>(e.v)] + e.length;
   };
-  std::sort(dual.begin(), dual.end(), [&](int a, int b) { return loop_length(a) > loop_length(b); });
+  // Loops of one length (a symmetric mesh has many) in the order of their
+  // edges' vertices, not of the edge list: the loops depend on the mesh only.
+  std::sort(dual.begin(), dual.end(), [&](int a, int b) {
+    const double la = loop_length(a), lb = loop_length(b);
+    if (la != lb) return la > lb;
+    const Edge &ea = g.edges[static_cast<std::size_t>(a)], &eb = g.edges[static_cast<std::size_t>(b)];
+    return edge_key(ea.u, ea.v) < edge_key(eb.u, eb.v);
+  });
   UnionFind faces(static_cast<int>(m.F.rows()));
   std::vector<Candidate> out;
   for (int i : dual) {
     const Edge& e = g.edges[static_cast<std::size_t>(i)];
-    if (faces.find(e.f0) != faces.find(e.f1)) faces.unite(e.f0, e.f1);
+    if (faces.find(e.a) != faces.find(e.b)) faces.unite(e.a, e.b);
     else out.push_back(tree_cycle(tree, e, mark));
   }
   return out;
@@ -222,7 +222,7 @@ std::vector<char> vertices_of(const std::vector<Candidate>& loops, std::size_t v
 
 // Shortest first: a tunnel loop of a new class, apart from those taken.
 Chosen choose_loops(std::vector<Candidate> candidates, const TunnelSearch& search, int genus, std::size_t vertices) {
-  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.length < b.length; });
+  std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.length < b.length; });
   Chosen chosen;
   std::vector<char> used(vertices, 0);
   for (const Candidate& c : candidates) {
@@ -253,7 +253,7 @@ bool tighten(const mesh::TriMesh& m, const SurfaceGraph& g, const TunnelSearch& 
     for (Candidate& c : generators_through(m, g, tree, mark))
       if (c.length < chosen.loops[i].length * (1.0 - 1e-9) && !touches(used, c)) candidates.push_back(std::move(c));
   }
-  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.length < b.length; });
+  std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.length < b.length; });
   for (const Candidate& c : candidates) {
     const Eigen::VectorXd cls = search.tunnel_class(c);
     if (cls.size() == 0) continue;

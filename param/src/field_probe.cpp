@@ -18,10 +18,17 @@ FieldProbe::FieldProbe(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, const
 int FieldProbe::locate(const Eigen::Vector3d& p, int* hint, Eigen::Vector4d* bary) const {
   // A hinted query is a short step from a known tet: a walk that leaves the
   // mesh means p is outside. A fresh one asks the grid (a walk from afar
-  // may leave a non-convex mesh), then scans.
+  // may leave a non-convex mesh), then the grid again with the looser rule
+  // of locate_in_tets's scan (a scan of every tet for each point outside H
+  // was most of the param stage on meshes of 100,000 tets).
   const bool fresh = !(hint && *hint >= 0 && *hint < T_.rows());
-  int c = fresh ? grid_->locate(p, bary) : -1;
-  if (c < 0) c = locate_in_tets(V_, T_, topo_, p, fresh ? -1 : *hint, bary, fresh);
+  int c = -1;
+  if (fresh) {
+    c = grid_->locate(p, bary);
+    if (c < 0) c = grid_->locate_as_scan(p, bary);
+  } else {
+    c = locate_in_tets(V_, T_, topo_, p, *hint, bary, false);
+  }
   if (c >= 0 && hint) *hint = c;
   return c;
 }

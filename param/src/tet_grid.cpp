@@ -56,12 +56,13 @@ std::array<int, 3> TetGrid::cell_of(const Eigen::Vector3d& p) const {
   return c;
 }
 
-int TetGrid::locate(const Eigen::Vector3d& p, Eigen::Vector4d* bary) const {
+int TetGrid::deepest(const Eigen::Vector3d& p, Eigen::Vector4d* bary, double tolerance, bool later_ties) const {
   if (tets_.empty()) return -1;
   const int cell = cell_index(cell_of(p));
   int best = -1;
-  double best_min = -1e-12;
+  double best_min = -tolerance;
   Eigen::Vector4d b, best_b = Eigen::Vector4d::Zero();
+  // A cell's tets are in index order (filled so).
   for (int s = start_[static_cast<std::size_t>(cell)]; s < start_[static_cast<std::size_t>(cell) + 1]; ++s) {
     const int t = tets_[static_cast<std::size_t>(s)];
     Eigen::Matrix<double, 4, 3> gp;
@@ -69,10 +70,16 @@ int TetGrid::locate(const Eigen::Vector3d& p, Eigen::Vector4d* bary) const {
     const Eigen::Vector3d r = p - vrow(V_, T_(t, 0));
     for (int k = 1; k < 4; ++k) b(k) = gp.row(k).dot(r);
     b(0) = 1.0 - b(1) - b(2) - b(3);
-    if (b.minCoeff() >= best_min) best_min = b.minCoeff(), best = t, best_b = b;
+    if (b.minCoeff() > best_min || (later_ties && b.minCoeff() == best_min)) best_min = b.minCoeff(), best = t, best_b = b;
   }
   if (best >= 0 && bary) *bary = best_b.cwiseMax(0.0) / best_b.cwiseMax(0.0).sum();
   return best;
+}
+
+int TetGrid::locate(const Eigen::Vector3d& p, Eigen::Vector4d* bary) const { return deepest(p, bary, 1e-12, true); }
+
+int TetGrid::locate_as_scan(const Eigen::Vector3d& p, Eigen::Vector4d* bary) const {
+  return deepest(p, bary, 1e-9, false);
 }
 
 }  // namespace igaprep::param::detail

@@ -16,10 +16,15 @@ class TetGrid {
   // The tet holding p (barycentric coordinates >= -1e-12), the one p is
   // deepest in when several do; -1 when none. *bary as locate_in_tets.
   int locate(const Eigen::Vector3d& p, Eigen::Vector4d* bary) const;
+  // The same with locate_in_tets's scan's rule: coordinates > -1e-9, the
+  // first tet (by index) of those p is deepest in. The scan's answer without
+  // its pass over every tet: a tet holding p meets p's cell.
+  int locate_as_scan(const Eigen::Vector3d& p, Eigen::Vector4d* bary) const;
 
  private:
   int cell_index(const std::array<int, 3>& c) const { return c[0] + n_[0] * (c[1] + n_[1] * c[2]); }
   std::array<int, 3> cell_of(const Eigen::Vector3d& p) const;
+  int deepest(const Eigen::Vector3d& p, Eigen::Vector4d* bary, double tolerance, bool later_ties) const;
 
   const Eigen::MatrixXd& V_;
   const Eigen::MatrixXi& T_;

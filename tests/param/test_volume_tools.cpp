@@ -627,6 +627,26 @@ TEST(FieldProbe, LinearFieldInAJitteredBox) {
   EXPECT_EQ(probe.locate(far, nullptr, nullptr), -1);
 }
 
+// A fresh query just outside H (within the scan's tolerance) finds the tet
+// the scan of every tet finds, without that scan; one farther out none.
+TEST(FieldProbe, AFreshQueryJustOutsideFindsTheScansTet) {
+  const LinearField f;
+  const FieldProbe probe(f.mesh.V, f.mesh.T, f.topo, f.u, f.grad);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> U(0.02, 0.98);
+  for (int i = 0; i < 50; ++i) {
+    const Eigen::Vector3d near(1.0 + 1e-11, U(rng), U(rng)), beyond(1.0 + 1e-6, U(rng), U(rng));
+    Eigen::Vector4d b_probe, b_scan;
+    const int c = probe.locate(near, nullptr, &b_probe);
+    ASSERT_GE(c, 0);
+    EXPECT_EQ(c, locate_in_tets(f.mesh.V, f.mesh.T, f.topo, near, -1, &b_scan, true));
+    EXPECT_EQ(b_probe, b_scan);
+    EXPECT_NEAR(probe.value(near), f.exact(near), 1e-9);
+    EXPECT_EQ(probe.locate(beyond, nullptr, nullptr), -1);
+    EXPECT_EQ(locate_in_tets(f.mesh.V, f.mesh.T, f.topo, beyond, -1, nullptr, true), -1);
+  }
+}
+
 TEST(FieldProbe, RayToLevelLandsOnThePlane) {
   const LinearField f;
   const FieldProbe probe(f.mesh.V, f.mesh.T, f.topo, f.u, f.grad);

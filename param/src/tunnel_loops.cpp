@@ -112,7 +112,7 @@ std::vector<Candidate> generators_through(const mesh::TriMesh& m, const SurfaceG
     return tree.dist[static_cast<std::size_t>(e.u)] + tree.dist[static_cast<std::size_t>(e.v)] + e.length;
   };
   // Loops of one length (a symmetric mesh has many) in the order of their
-  // edges' vertices, not of the edge list: the loops depend on the mesh only.
+  // edges' vertices, not of the edge list's order.
   std::sort(dual.begin(), dual.end(), [&](int a, int b) {
     const double la = loop_length(a), lb = loop_length(b);
     if (la != lb) return la > lb;

@@ -85,9 +85,8 @@ TEST(TunnelLoops, TheThreeHoleFrameGetsOneLoopRoundEachHole) {
 }
 
 // The loops depend on the surface, not on the order its triangles are
-// listed in (loops of one length are taken in the order of their edges'
-// vertices): the triangles reversed give the same loops, on the frame and
-// on the hip bone (where they did not before: ties among its loops).
+// listed in: the triangles reversed give the same loops, on the frame and
+// on the hip bone.
 std::set<std::set<int>> loop_sets(const std::vector<std::vector<int>>& loops) {
   std::set<std::set<int>> out;
   for (const auto& loop : loops) out.insert(std::set<int>(loop.begin(), loop.end()));

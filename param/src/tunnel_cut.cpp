@@ -48,10 +48,6 @@ Eigen::MatrixXi loop_sides(const mesh::TriMesh& m, const std::vector<std::vector
   return side;
 }
 
-// The face field with given values beside the loops: harmonic on T1 cut
-// along them (no coupling across a loop edge) and, with plate pairs, the
-// thin sides' pull of each pair to opposite values. One factorisation, then
-// one solve per choice of signs.
 // T1's faces as a graph with the loops' sides: what every field shares.
 struct CutSurface {
   detail::FaceGeometry geometry;
@@ -67,6 +63,10 @@ CutSurface cut_surface(const mesh::TriMesh& m, const std::vector<std::vector<int
   return s;
 }
 
+// The face field with given values beside the loops: harmonic on T1 cut
+// along them (no coupling across a loop edge) and, with plate pairs, the
+// thin sides' pull of each pair to opposite values. One factorisation, then
+// one solve per choice of signs.
 class SideField {
  public:
   SideField(const CutSurface& surface, const std::vector<detail::PlatePair>& pairs, double max_distance)

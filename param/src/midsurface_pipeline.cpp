@@ -93,25 +93,32 @@ class CandidateCuts {
       : surfaces_(surfaces), o_(o), good_enough_(good_enough) {}
 
   // Builds the midsurface on the cut; records why it was refused or its score.
+  // A cut whose (u, v) map needed cuts from the holes' corners (a pinwheel
+  // of small rectangles round each hole) is kept apart, taken only when no
+  // other candidate gives a map without them.
   void consider(CutLoops cut) {
     MidsurfaceResult c;
     if (!try_automatic_cut(surfaces_, o_, std::move(cut), c, tried_)) return;
     const double score = cut_score(c.paths);
+    const bool hole_cuts = !c.polycube.hole_cuts.empty();
     std::ostringstream line;
     line.precision(4);
-    line << c.cut.source << ": valid, path lengths to M0 mean " << c.paths.mean << ", spread "
-         << std::sqrt(c.paths.variance) << " (" << c.paths.reached << " of " << c.paths.traced
-         << " reached): score " << score;
+    line << c.cut.source << ": valid" << (hole_cuts ? " with cuts from the holes' corners" : "")
+         << ", path lengths to M0 mean " << c.paths.mean << ", spread " << std::sqrt(c.paths.variance) << " ("
+         << c.paths.reached << " of " << c.paths.traced << " reached): score " << score;
     valid_.push_back(line.str());
-    if (!best_ || score < kClearlyBetter * best_score_) best_ = std::move(c), best_score_ = score;
+    Best& b = hole_cuts ? with_hole_cuts_ : best_;
+    if (!b.result || score < kClearlyBetter * b.score) b.result = std::move(c), b.score = score;
   }
-  bool found() const { return best_.has_value(); }
+  // Found: a valid cut whose map needs no cuts from the holes' corners.
+  bool found() const { return best_.result.has_value(); }
+  bool found_any() const { return found() || with_hole_cuts_.result.has_value(); }
   // Without the quality paths there is no score: the first valid cut is taken.
-  bool done() const { return found() && (!o_.path_lengths || best_->paths.mean <= good_enough_); }
+  bool done() const { return found() && (!o_.path_lengths || best_.result->paths.mean <= good_enough_); }
   std::vector<std::string>& tried() { return tried_; }
 
   MidsurfaceResult take() {
-    MidsurfaceResult r = std::move(*best_);
+    MidsurfaceResult r = std::move(found() ? *best_.result : *with_hole_cuts_.result);
     r.tried = std::move(tried_);
     r.valid = std::move(valid_);
     return r;
@@ -121,8 +128,11 @@ class CandidateCuts {
   const std::vector<mesh::TriMesh>& surfaces_;
   const MidsurfaceOptions& o_;
   const double good_enough_;
-  std::optional<MidsurfaceResult> best_;
-  double best_score_ = 0.0;
+  struct Best {
+    std::optional<MidsurfaceResult> result;
+    double score = 0.0;
+  };
+  Best best_, with_hole_cuts_;
   std::vector<std::string> tried_, valid_;
 };
 
@@ -203,7 +213,8 @@ constexpr double kThinRatio = 0.5;
 // the principal planes; for others the principal planes, and the two sides
 // only when no plane gives a valid midsurface. When none does, the tunnel
 // loops' cuts, then the plane family's shortest valid cuts (at most
-// kFamilyTried).
+// kFamilyTried). A cut whose map needs cuts from the holes' corners does not
+// end the search: it is taken only when no later candidate does without.
 MidsurfaceResult automatic_midsurface(const std::vector<mesh::TriMesh>& surfaces, const MidsurfaceOptions& o,
                                       const std::string& name) {
   const mesh::TriMesh& T1 = surfaces[0];
@@ -236,7 +247,7 @@ MidsurfaceResult automatic_midsurface(const std::vector<mesh::TriMesh>& surfaces
     for (std::size_t i = 0; i < family.valid.size() && i < kFamilyTried && !candidates.done(); ++i)
       candidates.consider(family.valid[i]);
   }
-  if (candidates.found()) return candidates.take();
+  if (candidates.found_any()) return candidates.take();
   std::string all;
   for (const auto& t : candidates.tried()) all += "\n  " + t;
   throw bad_input(name + ": no automatic cut gives a valid midsurface:" + all +

@@ -87,7 +87,10 @@ std::vector<std::string> midsurface_lines(const param::MidsurfaceResult& r) {
   std::vector<std::string> out;
   for (const auto& t : r.tried) out.push_back("rejected candidate: " + t);
   for (const auto& v : r.valid) out.push_back("candidate: " + v);
-  if (r.valid.size() > 1) out.push_back("kept the candidate with the lowest score (" + r.cut.source + ")");
+  if (r.valid.size() > 1)
+    out.push_back("kept the candidate with the lowest score" +
+                  std::string(r.polycube.hole_cuts.empty() ? " whose map needs no cuts from the holes' corners" : "") +
+                  " (" + r.cut.source + ")");
   for (std::size_t l = 0; l < r.cut.loops.size(); ++l)
     out.push_back(text("loop %zu: %zu vertices", l, r.cut.loops[l].size()));
   out.push_back(text("midsurface (M0): %ld triangles; trimmed (M0trim): %ld triangles", static_cast<long>(r.m0.mesh.F.rows()),

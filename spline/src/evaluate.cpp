@@ -174,25 +174,31 @@ GridBasis grid_basis(const Patch& p, const std::array<std::vector<double>, 3>& p
 
 namespace {
 
-// Sum factorisation. Output: H[slot] = array (m_u m_v m_w) x D, point-major.
-void grid_homogeneous(const Patch& P, const GridBasis& G, int order,
-                      std::vector<std::vector<double>>* Hout, int* Dout) {
+// Sum factorisation, u and v contracted: the w-layers of control points
+// that the grid's w parameters reach, each contracted to the grid's (u, v)
+// points; layer w of the grid is then contract_w_layer's.
+struct UvContraction {
+  int D = 3;        // homogeneous coordinates (4 when rational)
+  int k_first = 0;  // the first control layer in T2
+  long slab = 0;    // m_u m_v D: one grid w-layer
+  // T2[du * (order + 1) + dv][(k * m_v + j) * m_u * D + i * D + c]
+  std::vector<std::vector<double>> T2;
+};
+
+UvContraction contract_uv(const Patch& P, const GridBasis& G, int order) {
   check_patch_shape(P);
   for (int d = 0; d < 3; ++d)
     if (G.tables[d].degree != P.degrees[d] || G.knots[d] != P.knots[d])
       throw bad_input("evaluate_grid: the grid basis was built for other knots or degrees (direction " +
                       std::to_string(d) + ")");
   if (order > G.order) throw bad_input("evaluate_grid: the grid basis holds fewer derivatives");
+  UvContraction out;
   const int D = P.rational() ? 4 : 3;
-  *Dout = D;
+  out.D = D;
   const Eigen::MatrixXd Hc = detail::homogeneous_points(P);
   const int nu = P.count(0), nv = P.count(1), nw = P.count(2);
   const int mu = G.size(0), mv = G.size(1), mw = G.size(2);
   const int pu = P.degrees[0], pv = P.degrees[1], pw = P.degrees[2];
-  // Control points point-major.
-  std::vector<double> C(static_cast<size_t>(nu) * nv * nw * D);
-  for (long i = 0; i < Hc.rows(); ++i)
-    for (int c = 0; c < D; ++c) C[i * D + c] = Hc(i, c);
   const BasisTable &Tu = G.tables[0], &Tv = G.tables[1], &Tw = G.tables[2];
   // Only the w-layers of control points the w parameters reach are
   // contracted (a grid of one element's w parameters needs p + 1 of them):
@@ -203,14 +209,19 @@ void grid_homogeneous(const Patch& P, const GridBasis& G, int order,
     k_last = std::max(k_last, Tw.span[k]);
   }
   const int layers = std::max(0, k_last - k_first + 1);
+  out.k_first = k_first;
+  // Control points of those layers, point-major.
+  std::vector<double> C(static_cast<size_t>(layers) * nv * nu * D);
+  for (long i = 0; i < static_cast<long>(layers) * nv * nu; ++i)
+    for (int c = 0; c < D; ++c) C[i * D + c] = Hc(static_cast<long>(k_first) * nv * nu + i, c);
   // Stage 1: contract u. T1[du][((k*nv + j)*mu + i)*D + c].
   std::vector<std::vector<double>> T1(order + 1);
   for (int du = 0; du <= order; ++du) {
-    auto& out = T1[du];
-    out.assign(static_cast<size_t>(layers) * nv * mu * D, 0.0);
+    auto& t = T1[du];
+    t.resize(static_cast<size_t>(layers) * nv * mu * D);
     for (long row = 0; row < static_cast<long>(layers) * nv; ++row) {
-      const double* src = C.data() + (static_cast<long>(k_first) * nv + row) * nu * D;
-      double* dst = out.data() + row * mu * D;
+      const double* src = C.data() + row * nu * D;
+      double* dst = t.data() + row * mu * D;
       for (int i = 0; i < mu; ++i) {
         const double* Nr = Tu.at(i, du);
         const double* s = src + static_cast<long>(Tu.span[i] - pu) * D;
@@ -223,15 +234,16 @@ void grid_homogeneous(const Patch& P, const GridBasis& G, int order,
   }
   // Stage 2: contract v. T2[(du,dv)][((k*mv + j)*mu + i)*D + c].
   const long rowlen = static_cast<long>(mu) * D;
-  std::vector<std::vector<double>> T2((order + 1) * (order + 1));
+  out.slab = static_cast<long>(mv) * rowlen;
+  out.T2.resize((order + 1) * (order + 1));
   for (int du = 0; du <= order; ++du)
     for (int dv = 0; du + dv <= order; ++dv) {
-      auto& out = T2[du * (order + 1) + dv];
-      out.assign(static_cast<size_t>(layers) * mv * rowlen, 0.0);
+      auto& t = out.T2[du * (order + 1) + dv];
+      t.assign(static_cast<size_t>(layers) * mv * rowlen, 0.0);
       for (int k = 0; k < layers; ++k)
         for (int j = 0; j < mv; ++j) {
           const double* Nr = Tv.at(j, dv);
-          double* dst = out.data() + (static_cast<long>(k) * mv + j) * rowlen;
+          double* dst = t.data() + (static_cast<long>(k) * mv + j) * rowlen;
           for (int r = 0; r <= pv; ++r) {
             const double f = Nr[r];
             const double* src = T1[du].data() + (static_cast<long>(k) * nv + Tv.span[j] - pv + r) * rowlen;
@@ -239,66 +251,77 @@ void grid_homogeneous(const Patch& P, const GridBasis& G, int order,
           }
         }
     }
-  // Stage 3: contract w.
-  const long slab = static_cast<long>(mv) * rowlen;
-  const int nc = combo_count(order);
-  Hout->assign(nc, {});
+  return out;
+}
+
+// Stage 3 for grid w-layer k: H[s * slab + q], the homogeneous derivative
+// `s` (kCombo order) at the layer's point q / D, coordinate q % D.
+void contract_w_layer(const UvContraction& uv, const GridBasis& G, int order, int k, std::vector<double>& H) {
+  const int pw = G.tables[2].degree, nc = combo_count(order);
+  const long slab = uv.slab;
+  H.assign(static_cast<size_t>(nc) * slab, 0.0);
   for (int s = 0; s < nc; ++s) {
     const int du = kCombo[s][0], dv = kCombo[s][1], dw = kCombo[s][2];
-    auto& out = (*Hout)[s];
-    out.assign(static_cast<size_t>(mw) * slab, 0.0);
-    const auto& in = T2[du * (order + 1) + dv];
-    for (int k = 0; k < mw; ++k) {
-      const double* Nr = Tw.at(k, dw);
-      double* dst = out.data() + k * slab;
-      for (int r = 0; r <= pw; ++r) {
-        const double f = Nr[r];
-        const double* src = in.data() + static_cast<long>(Tw.span[k] - pw + r - k_first) * slab;
-        for (long q = 0; q < slab; ++q) dst[q] += f * src[q];
-      }
+    const auto& in = uv.T2[du * (order + 1) + dv];
+    const double* Nr = G.tables[2].at(k, dw);
+    double* dst = H.data() + s * slab;
+    for (int r = 0; r <= pw; ++r) {
+      const double f = Nr[r];
+      const double* src = in.data() + static_cast<long>(G.tables[2].span[k] - pw + r - uv.k_first) * slab;
+      for (long q = 0; q < slab; ++q) dst[q] += f * src[q];
     }
   }
 }
 
 }  // namespace
 
+// Each grid w-layer is contracted and converted while it is in cache; no
+// array of the whole grid's homogeneous values is made (for large grids its
+// fresh pages cost more than the arithmetic).
 Eigen::MatrixXd evaluate_grid_points(const Patch& p, const GridBasis& basis) {
-  std::vector<std::vector<double>> H;
-  int D;
-  grid_homogeneous(p, basis, 0, &H, &D);
-  const long N = basis.point_count();
-  Eigen::MatrixXd X(N, 3);
-  const double* h = H[0].data();
-  for (long i = 0; i < N; ++i) {
-    const double inv = (D == 4) ? 1.0 / h[i * 4 + 3] : 1.0;
-    for (int c = 0; c < 3; ++c) X(i, c) = h[i * D + c] * inv;
+  const UvContraction uv = contract_uv(p, basis, 0);
+  const int D = uv.D;
+  const long layer_points = uv.slab / D;
+  Eigen::MatrixXd X(basis.point_count(), 3);
+  std::vector<double> H;
+  for (int k = 0; k < basis.size(2); ++k) {
+    contract_w_layer(uv, basis, 0, k, H);
+    for (long q = 0; q < layer_points; ++q) {
+      const double* h = H.data() + q * D;
+      const double inv = (D == 4) ? 1.0 / h[3] : 1.0;
+      for (int c = 0; c < 3; ++c) X(k * layer_points + q, c) = h[c] * inv;
+    }
   }
   return X;
 }
 
 GridEvaluation evaluate_grid(const Patch& p, const GridBasis& basis) {
   const int order = basis.order;
-  std::vector<std::vector<double>> H;
-  int D;
-  grid_homogeneous(p, basis, order, &H, &D);
+  const UvContraction uv = contract_uv(p, basis, order);
+  const int D = uv.D, nc = combo_count(order);
+  const long layer_points = uv.slab / D;
   const long N = basis.point_count();
-  const int nc = combo_count(order);
   GridEvaluation r;
   r.points.resize(N, 3);
   if (order >= 1) r.jacobians.resize(N, 9);
   if (order >= 2) r.second.resize(N, 18);
+  std::vector<double> H;
   double h[10][4], X[10][3];
-  for (long i = 0; i < N; ++i) {
-    for (int s = 0; s < nc; ++s)
-      for (int c = 0; c < D; ++c) h[s][c] = H[s][i * D + c];
-    to_cartesian(h, D, order, X);
-    for (int c = 0; c < 3; ++c) r.points(i, c) = X[0][c];
-    if (order >= 1)
-      for (int c = 0; c < 3; ++c)
-        for (int a = 0; a < 3; ++a) r.jacobians(i, 3 * c + a) = X[1 + a][c];
-    if (order >= 2)
-      for (int k = 0; k < 6; ++k)
-        for (int c = 0; c < 3; ++c) r.second(i, 3 * k + c) = X[4 + k][c];
+  for (int k = 0; k < basis.size(2); ++k) {
+    contract_w_layer(uv, basis, order, k, H);
+    for (long q = 0; q < layer_points; ++q) {
+      const long i = k * layer_points + q;
+      for (int s = 0; s < nc; ++s)
+        for (int c = 0; c < D; ++c) h[s][c] = H[s * uv.slab + q * D + c];
+      to_cartesian(h, D, order, X);
+      for (int c = 0; c < 3; ++c) r.points(i, c) = X[0][c];
+      if (order >= 1)
+        for (int c = 0; c < 3; ++c)
+          for (int a = 0; a < 3; ++a) r.jacobians(i, 3 * c + a) = X[1 + a][c];
+      if (order >= 2)
+        for (int k2 = 0; k2 < 6; ++k2)
+          for (int c = 0; c < 3; ++c) r.second(i, 3 * k2 + c) = X[4 + k2][c];
+    }
   }
   return r;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -102,6 +103,81 @@ std::string point_text(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, int c
   return buf;
 }
 
+// The tets round an edge between two fixed vertices at 0, ordered as a fan
+// from one face on T1 to the other: the vertices opposite the edge, in that
+// order (empty when the fan is closed or not one path).
+std::vector<int> edge_fan(const Eigen::MatrixXi& T, const std::vector<int>& tets, int a, int b) {
+  std::map<int, std::vector<int>> at;  // opposite vertex -> the fan's tets holding it
+  std::vector<std::array<int, 2>> opposite;
+  for (int c : tets) {
+    std::array<int, 2> o{};
+    int n = 0;
+    for (int k = 0; k < 4; ++k)
+      if (T(c, k) != a && T(c, k) != b && n < 2) o[n++] = T(c, k);
+    opposite.push_back(o);
+    for (int v : o) at[v].push_back(static_cast<int>(opposite.size()) - 1);
+  }
+  int start = -1;
+  for (const auto& [v, list] : at)
+    if (list.size() == 1) {
+      start = v;
+      break;
+    }
+  if (start < 0) return {};
+  std::vector<int> fan{start};
+  std::vector<char> used(opposite.size(), 0);
+  for (int v = start;;) {
+    int next_tet = -1;
+    for (int t : at[v])
+      if (!used[t]) next_tet = t;
+    if (next_tet < 0) break;
+    used[next_tet] = 1;
+    v = opposite[next_tet][0] == v ? opposite[next_tet][1] : opposite[next_tet][0];
+    fan.push_back(v);
+  }
+  return fan.size() == opposite.size() + 1 ? fan : std::vector<int>{};
+}
+
+// Where a discrete harmonic f is not monotone round a loop edge (a free
+// vertex next to the loop with the other side's sign, between two of its
+// own), the edge would get three triangles of M0. Along each fan of a loop
+// edge the signs must change once, from the first T1 face's side to the
+// other's; the free vertices that break this at the least total |f| change
+// sign. Returns how many did.
+int settle_loop_edge_fans(const Eigen::MatrixXi& T, Eigen::Index num_fixed, Eigen::VectorXd& g) {
+  static const int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  auto loop_vertex = [&](int v) { return v < num_fixed && g(v) == 0.0; };
+  std::map<std::pair<int, int>, std::vector<int>> edge_tets;
+  for (Eigen::Index c = 0; c < T.rows(); ++c)
+    for (const auto& e : kEdges) {
+      int a = T(c, e[0]), b = T(c, e[1]);
+      if (!loop_vertex(a) || !loop_vertex(b)) continue;
+      if (a > b) std::swap(a, b);
+      edge_tets[{a, b}].push_back(static_cast<int>(c));
+    }
+  int changed = 0;
+  for (const auto& [edge, tets] : edge_tets) {
+    const std::vector<int> fan = edge_fan(T, tets, edge.first, edge.second);
+    if (fan.size() < 3) continue;
+    const double first = g(fan.front()), last = g(fan.back());
+    if (!(first * last < 0.0)) continue;  // not a loop edge between the two sides
+    // Cost of the change after fan[j - 1]: the free vertices on the wrong side.
+    auto wrong = [&](std::size_t i, std::size_t j) { return (i < j ? first : last) * g(fan[i]) < 0.0; };
+    std::size_t best_j = 1;
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 1; j < fan.size(); ++j) {
+      double cost = 0.0;
+      for (std::size_t i = 1; i + 1 < fan.size(); ++i)
+        if (wrong(i, j)) cost += fan[i] < num_fixed ? std::numeric_limits<double>::infinity() : std::abs(g(fan[i]));
+      if (cost < best) best = cost, best_j = j;
+    }
+    if (!std::isfinite(best)) continue;
+    for (std::size_t i = 1; i + 1 < fan.size(); ++i)
+      if (wrong(i, best_j)) g(fan[i]) = -g(fan[i]), ++changed;
+  }
+  return changed;
+}
+
 }  // namespace
 
 Midsurface zero_sheet(const mesh::TetMesh& tets, const Eigen::VectorXd& f, Eigen::Index num_fixed, double snap) {
@@ -125,6 +201,12 @@ Midsurface zero_sheet(const mesh::TetMesh& tets, const Eigen::VectorXd& f, Eigen
       if (g(i) != 0.0) ++out.snapped;
       g(i) = 0.0;
     }
+  // A flip can break another fan that shares the vertex: a few rounds.
+  for (int round = 0; round < 3; ++round) {
+    const int n = settle_loop_edge_fans(T, num_fixed, g);
+    out.settled += n;
+    if (n == 0) break;
+  }
 
   std::unordered_map<std::uint64_t, int> vid;
   std::vector<std::array<int, 2>> edges;

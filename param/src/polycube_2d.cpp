@@ -59,6 +59,30 @@ std::vector<double> arc_lengths(const mesh::TriMesh& m, const std::vector<int>& 
   return s;
 }
 
+// Arc lengths along a loop with each masked run (a lobe's boundary) counted
+// as the straight line across its neck: the length the loop keeps on the
+// rectangle once the lobes are arms. Without a mask, arc_lengths.
+std::vector<double> arc_lengths_across_necks(const mesh::TriMesh& m, const std::vector<int>& loop,
+                                             const std::vector<char>& masked) {
+  const std::size_t n = loop.size();
+  const auto unmasked = std::find(masked.begin(), masked.end(), 0);
+  if (unmasked == masked.end()) return arc_lengths(m, loop);
+  std::vector<double> edge(n, 0.0);  // edge i runs from position i to i + 1
+  const std::size_t u = static_cast<std::size_t>(unmasked - masked.begin());
+  std::size_t run_start = u;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = (u + k) % n, j = (i + 1) % n;
+    if (masked[j] && !masked[i]) run_start = j;
+    const bool inside = masked[i] && masked[j];
+    const bool run_ends = inside && !masked[(j + 1) % n];
+    if (!inside) edge[i] = (P(m, loop[j]) - P(m, loop[i])).norm();
+    else if (run_ends) edge[i] = (P(m, loop[j]) - P(m, loop[run_start])).norm();
+  }
+  std::vector<double> s(n + 1, 0.0);
+  for (std::size_t i = 0; i < n; ++i) s[i + 1] = s[i] + edge[i];
+  return s;
+}
+
 // Rotates the loop's sides so segment chords follow the expected directions best.
 void assign_sides(const mesh::TriMesh& m, PolycubeLoop& L, const SheetFrame& fr) {
   std::array<Eigen::Vector2d, 4> chord;
@@ -258,10 +282,11 @@ std::vector<char> lobe_mask(std::size_t n, const std::vector<SheetLobe>& lobes) 
 // Four corners of L outside the masked positions: the extreme points along
 // the frame's diagonals. Returns false (corners evenly spread by arc length
 // instead, or none) when those are not four in order with long enough
-// segments.
+// segments (measured with the lobes across their necks).
 bool place_corners(const mesh::TriMesh& m, PolycubeLoop& L, const SheetFrame& fr, const std::vector<char>& masked) {
   const std::size_t n = L.vertices.size();
-  const std::vector<double> s = arc_lengths(m, L.vertices);
+  // The sides' lengths as the rectangle will have them, lobes across their necks.
+  const std::vector<double> s = arc_lengths_across_necks(m, L.vertices, masked);
   Eigen::Vector3d c = Eigen::Vector3d::Zero();
   int count = 0;
   for (std::size_t i = 0; i < n; ++i)

@@ -89,7 +89,12 @@ struct LobeSearch {
   }
 };
 
+// Whether two arcs share a loop position. Arcs that only touch (one's end is
+// the other's start) share one: two arms need a loop edge between them. The
+// arcs' ends are compared by sample, not by arc length, which rounding can
+// put a hair apart.
 bool overlaps(const LobeSearch& q, const NeckCandidate& x, const NeckCandidate& y) {
+  if (x.a == y.a || x.a == y.b || x.b == y.a || x.b == y.b) return true;
   // Loop positions covered by each arc, as intervals on the unrolled loop.
   const double total = q.s.back();
   const double xa = q.at(x.a), ya = q.at(y.a);
@@ -190,6 +195,9 @@ std::vector<SheetLobe> find_lobes(const mesh::TriMesh& sheet, const std::vector<
     }
     chosen.push_back(lobe);
   }
+  double lobes_area = 0.0;
+  for (const NeckCandidate& c : chosen) lobes_area += c.area;
+  if (lobes_area > o.max_total_share * total_area) return {};
   std::vector<SheetLobe> out;
   for (const NeckCandidate& c : chosen)
     out.push_back({q.sample[static_cast<std::size_t>(c.a)], q.sample[static_cast<std::size_t>(c.b)], c.neck, c.area, c.modulus});

@@ -1,6 +1,8 @@
 // The midsurface M0 and M0trim (seed paper, sections 4.1 and 4.2) on the
 // built-in models with automatic cuts, and on sphere2 with a plane and with
 // explicit loops.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "igaprep/core/error.h"
@@ -155,6 +157,42 @@ TEST(MidsurfaceRefusal, ATetAtFZeroNamesTheCaseKeysThatChangeIt) {
     EXPECT_NE(m.find("'midsurface.cut'"), std::string::npos) << m;
     EXPECT_NE(m.find("'tetmesh.max_volume'"), std::string::npos) << m;
   }
+}
+
+
+// A loop edge (0, 1) on T1 with its fan of four tets from the face on R+'s
+// side (vertex 2, f = 1) to the face on R-'s (vertex 3, f = -1). The free
+// vertices between go +, -, +: a discrete harmonic f need not be monotone
+// there (the hand's thin sides, 2026-12-07), and the edge would bound three
+// triangles of M0. The vertex that breaks the order at the least |f| (the
+// last, 0.02) changes sign: the edge bounds one triangle.
+TEST(MidsurfaceLoopEdge, ASignOutOfOrderRoundALoopEdgeIsSettled) {
+  mesh::TetMesh tets;
+  tets.V.resize(7, 3);
+  tets.V.row(0) << 0, 0, 0;
+  tets.V.row(1) << 0, 0, 1;
+  const double pi = std::acos(-1.0);
+  const int around[5] = {2, 4, 5, 6, 3};  // the fan's opposite vertices in order, at 0, 45, ..., 180 degrees
+  for (int k = 0; k < 5; ++k) tets.V.row(around[k]) << std::cos(k * pi / 4), std::sin(k * pi / 4), 0.5;
+  tets.T.resize(4, 4);
+  for (int k = 0; k < 4; ++k) tets.T.row(k) << 0, 1, around[k], around[k + 1];
+  Eigen::VectorXd f(7);
+  f << 0.0, 0.0, 1.0, -1.0, 0.5, -0.1, 0.02;  // vertices 0 to 3 fixed (T1), 4 to 6 free
+  const Midsurface m = zero_sheet(tets, f, 4, 0.0);
+  EXPECT_EQ(m.settled, 1);
+  EXPECT_DOUBLE_EQ(m.field(6), -0.02);
+  EXPECT_DOUBLE_EQ(m.field(5), -0.1);
+  int on_edge = 0;
+  for (Eigen::Index t = 0; t < m.mesh.F.rows(); ++t) {
+    int ends = 0;
+    for (int k = 0; k < 3; ++k) {
+      const int v = m.mesh.F(t, k);
+      ends += m.edge(v, 0) == m.edge(v, 1) && m.edge(v, 0) < 2;
+    }
+    on_edge += ends == 2;
+  }
+  EXPECT_EQ(on_edge, 1);
+  EXPECT_TRUE(analyze_sheet(m.mesh.F, m.mesh.V.rows()).edge_manifold);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // polycube_2d.h): a finger on a plate is found at its base and mapped onto an
 // arm; a plain strip has none.
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -89,6 +90,22 @@ TEST(SheetLobes, AStripAndAPlateHaveNone) {
   EXPECT_TRUE(find_lobes(strip, loops_of(strip)[0], {}).empty());
   const mesh::TriMesh plate = lattice_sheet(0.0, 0.0, 4.0, 2.0, 0.125, [](double, double) { return true; });
   EXPECT_TRUE(find_lobes(plate, loops_of(plate)[0], {}).empty());
+}
+
+TEST(SheetLobes, TwoBladesOnASmallHubAreNoLobes) {
+  // Blades 5.5 x 0.5 each side of a 1 x 1 hub: each blade is a lobe by
+  // itself (42 % of the sheet), but together they are 85 % of it.
+  const mesh::TriMesh m = lattice_sheet(-6.0, -0.5, 6.0, 0.5, 0.125, [](double x, double y) {
+    return std::abs(x) < 0.5 || std::abs(y) < 0.25;
+  });
+  const auto loops = loops_of(m);
+  ASSERT_EQ(loops.size(), 1u);
+  EXPECT_TRUE(find_lobes(m, loops[0], {}).empty());
+  LobeOptions any_share;
+  any_share.max_total_share = 1.0;
+  const std::vector<SheetLobe> blades = find_lobes(m, loops[0], {}, any_share);
+  ASSERT_EQ(blades.size(), 2u);
+  EXPECT_GT(blades[0].area + blades[1].area, 0.75 * 6.5);
 }
 
 TEST(SheetLobes, ALobeHoldingAHoleIsNone) {
@@ -237,4 +254,33 @@ TEST(PolycubeArms, ArmsThatShareANecksCornerAreNotApart) {
   L.arms = {b};
   L.arms[0].corners = {10, 11, 12, 13};
   EXPECT_FALSE(arms_apart({L}));
+}
+
+// A palm 2 x 2 with four fingers 4 long side by side on top and a thumb on
+// its left: the fingers make the loop long (about 44), so the palm's plain
+// bottom side is under 5 % of it; measured as the rectangle will have it,
+// each finger across its neck, it is a quarter of it. Each lobe gets an arm
+// (before, the corners were refused and all five lobes dropped).
+TEST(PolycubeArms, FiveFingersOnAPalmEachGetAnArm) {
+  mesh::TriMesh m = lattice_sheet(-2.5, 0.0, 2.0, 6.0, 0.125, [](double x, double y) {
+    const bool palm = x > 0.0 && y < 2.0;
+    const bool finger = y > 2.0 && std::fmod(x, 0.5) > 0.125 && std::fmod(x, 0.5) < 0.375 && x > 0.0;
+    const bool thumb = x < 0.0 && y > 0.75 && y < 1.25;
+    return palm || finger || thumb;
+  });
+  const auto loops = loops_of(m);
+  ASSERT_EQ(loops.size(), 1u);
+  EXPECT_EQ(find_lobes(m, loops[0], {}).size(), 5u);
+  const Polycube2D pc = polycube_2d(m, loops);
+  EXPECT_EQ(pc.lobes, 5);
+  EXPECT_FALSE(pc.arms_dropped) << pc.arms_dropped_reason;
+  ASSERT_EQ(pc.domain.arms.size(), 5u);
+  EXPECT_GT(pc.min_jacobian, 0.0);
+  double area = pc.domain.width * pc.domain.height, tiled = 0.0;
+  for (const DomainArm& arm : pc.domain.arms) {
+    const Eigen::Vector4d box = arm_box(pc.domain, arm);
+    area += (box(2) - box(0)) * (box(3) - box(1));
+  }
+  for (const Eigen::Vector4d& r : pc.rectangles) tiled += (r(2) - r(0)) * (r(3) - r(1));
+  EXPECT_NEAR(tiled, area, 1e-12 * area);
 }

@@ -32,6 +32,7 @@ struct Midsurface {
   Eigen::VectorXi tet;      // #F: the tet each triangle lies in
   Eigen::VectorXd field;    // the field that was contoured (f with near-zero free values snapped to 0)
   int snapped = 0;          // free vertices whose value was snapped to 0
+  int settled = 0;          // free vertices next to a loop edge whose sign changed (settle_loop_edge_fans)
   std::vector<std::vector<int>> boundary_loops;  // of mesh, oriented as its boundary
 };
 
@@ -39,7 +40,11 @@ struct Midsurface {
 // start of tets.V), snap: a free vertex whose value is so close to 0 that an
 // edge of it would be cut within snap of its length from it is snapped to 0
 // (no slivers); vertices at exactly 0 are vertices of M0, so the loop vertices
-// are M0's boundary, exactly. Output: the zero set as a triangle sheet.
+// are M0's boundary, exactly. Round each loop edge the signs of the free
+// vertices must change once between its two faces on T1; those that do not
+// (a discrete harmonic f need not be monotone there) change sign, the fewest
+// by |f|, so that the loop edge bounds one triangle of M0. Output: the zero
+// set as a triangle sheet.
 // Throws bad_input when four vertices of one tet are at 0 (naming where).
 Midsurface zero_sheet(const mesh::TetMesh& tets, const Eigen::VectorXd& f, Eigen::Index num_fixed, double snap);
 

@@ -20,6 +20,12 @@ struct SheetLobe {
 struct LobeOptions {
   double min_modulus = 1.5;     // a lobe longer than wide (a square bump is none)
   double max_area_share = 0.45;  // a lobe is the smaller part of the sheet
+  // The lobes together leave the body at least a quarter of the sheet: two
+  // blades on a small hub (the propeller, 88 % in its blades) are one long
+  // sheet with a bulge, mapped better onto one rectangle along it than as a
+  // hub with two arms; a hand keeps its fingers (37 %), an elephant its legs
+  // and trunk (66 %).
+  double max_total_share = 0.75;
   int samples = 200;             // candidate neck ends along the loop
   // A neck's path across the sheet at most this times its straight length
   // (the edge graph zigzags; a fold of the sheet back onto itself is no neck).
@@ -37,8 +43,9 @@ struct LobeOptions {
 
 // Inputs: the sheet, one of its boundary loops (vertex indices in order),
 // the other loops (a lobe holding one of their vertices is no lobe: an arm
-// has no holes). Output: lobes whose boundaries do not overlap, ordered by
-// start. Deterministic.
+// has no holes). Output: lobes whose boundaries do not overlap (nor touch),
+// ordered by start; none when together they exceed max_total_share of the
+// sheet. Deterministic.
 std::vector<SheetLobe> find_lobes(const mesh::TriMesh& sheet, const std::vector<int>& loop,
                                   const std::vector<std::vector<int>>& other_loops, const LobeOptions& options = {});
 

@@ -982,6 +982,33 @@ Eigen::VectorXd uv_jacobians(const mesh::TriMesh& m, const Eigen::MatrixXd& uv) 
   return J;
 }
 
+double squeezed_share(const mesh::TriMesh& sheet, const Eigen::VectorXd& jacobian, double factor) {
+  std::vector<std::pair<double, double>> by_jacobian;  // (J, 3D area)
+  double total = 0.0;
+  for (Eigen::Index f = 0; f < sheet.F.rows(); ++f) {
+    const int a = sheet.F(f, 0), b = sheet.F(f, 1), c = sheet.F(f, 2);
+    const double area = 0.5 * (P(sheet, b) - P(sheet, a)).cross(P(sheet, c) - P(sheet, a)).norm();
+    by_jacobian.emplace_back(jacobian(f), area);
+    total += area;
+  }
+  if (!(total > 0.0)) return 0.0;
+  std::sort(by_jacobian.begin(), by_jacobian.end());
+  double run = 0.0, median = 0.0;
+  for (const auto& [J, area] : by_jacobian) {
+    run += area;
+    if (run >= 0.5 * total) {
+      median = J;
+      break;
+    }
+  }
+  double squeezed = 0.0;
+  for (const auto& [J, area] : by_jacobian) {
+    if (!(J < factor * median)) break;
+    squeezed += area;
+  }
+  return squeezed / total;
+}
+
 namespace {
 
 void sort_unique(std::vector<double>& x) {

@@ -89,7 +89,7 @@ std::vector<std::string> midsurface_lines(const param::MidsurfaceResult& r) {
   for (const auto& v : r.valid) out.push_back("candidate: " + v);
   if (r.valid.size() > 1)
     out.push_back("kept the candidate with the lowest score" +
-                  std::string(r.polycube.hole_cuts.empty() ? " whose map needs no cuts from the holes' corners" : "") +
+                  std::string(r.second_best ? "" : " whose map needs no cuts from the holes' corners and squeezes no part of M0trim") +
                   " (" + r.cut.source + ")");
   for (std::size_t l = 0; l < r.cut.loops.size(); ++l)
     out.push_back(text("loop %zu: %zu vertices", l, r.cut.loops[l].size()));

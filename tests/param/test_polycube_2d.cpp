@@ -161,3 +161,19 @@ TEST(DomainRectangles, LongIntervalsAreCutIntoEqualParts) {
     EXPECT_NEAR(widest, longest, 1e-12) << aspect;
   }
 }
+
+// Four unit right triangles in 3D (area 0.5 each); the squeezed share is
+// the area under a tenth of the area-weighted median Jacobian.
+TEST(SqueezedShare, CountsTheAreaUnderATenthOfTheMedianScale) {
+  igaprep::mesh::TriMesh m;
+  m.V.resize(6, 3);
+  m.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 2, 0, 0, 2, 1, 0;
+  m.F.resize(4, 3);
+  m.F << 0, 1, 2, 1, 3, 2, 1, 4, 3, 4, 5, 3;
+  Eigen::VectorXd J(4);
+  J << 1.0, 2.0, 0.09, 1.5;  // median 1.0 by area (half the area lies at or below it)
+  EXPECT_DOUBLE_EQ(squeezed_share(m, J), 0.25);
+  J(2) = 0.16;  // over 0.1 * 1.0
+  EXPECT_DOUBLE_EQ(squeezed_share(m, J), 0.0);
+  EXPECT_DOUBLE_EQ(squeezed_share(m, J, 0.5), 0.25);
+}

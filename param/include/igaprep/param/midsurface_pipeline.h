@@ -41,6 +41,8 @@ struct MidsurfaceResult {
   Polycube2D polycube;
   std::vector<std::string> tried;  // automatic cut: why each rejected candidate failed
   std::vector<std::string> valid;  // automatic cut: the valid candidates with their scores (the best one is kept)
+  bool second_best = false;  // automatic cut: kept for want of a candidate whose map needs no cuts from the
+                             // holes' corners and squeezes no part of M0trim
 };
 
 // Inputs: surfaces T1..Tn (validated, nested, outward), options, name of T1 for

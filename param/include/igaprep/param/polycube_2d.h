@@ -162,6 +162,11 @@ int untangle_uv(const mesh::TriMesh& sheet, Eigen::MatrixXd& uv, const std::vect
 // Per triangle: signed (u, v) area / 3D area (> 0: positively oriented).
 Eigen::VectorXd uv_jacobians(const mesh::TriMesh& sheet, const Eigen::MatrixXd& uv);
 
+// The share of the sheet's 3D area in triangles whose (u, v) Jacobian is
+// under `factor` times the area-weighted median: the part a map squeezes (a
+// lobe pressed into a sliver, whose volume the blocks then lose).
+double squeezed_share(const mesh::TriMesh& sheet, const Eigen::VectorXd& jacobian, double factor = 0.1);
+
 // The domain cut into rectangles by extending every hole side and arm side
 // across the whole domain: the cells of the grid of all hole sides, arm sides
 // and the outer sides that lie inside the domain. Each (umin, vmin, umax, vmax). With

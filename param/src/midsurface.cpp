@@ -23,6 +23,13 @@
 
 namespace igaprep::param {
 
+namespace {
+
+// A tet's six edges as pairs of its corners.
+constexpr int kTetEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+
+}  // namespace
+
 int split_loop_chords(mesh::TetMesh& tets, const CutLoops& cut) {
   const Eigen::Index n1 = cut.surface.V.rows();
   std::vector<char> on_loop(static_cast<std::size_t>(n1), 0);
@@ -33,14 +40,13 @@ int split_loop_chords(mesh::TetMesh& tets, const CutLoops& cut) {
       const int a = loop[i], b = loop[(i + 1) % loop.size()];
       loop_edges.insert(edge_key(a, b));
     }
-  static const int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
   int total = 0;
   for (int pass = 0; pass < 64; ++pass) {
     std::map<std::uint64_t, int> mid;  // edge -> new vertex
     std::vector<char> touched(static_cast<std::size_t>(tets.T.rows()), 0);
     std::map<std::uint64_t, std::vector<int>> edge_tets;
     for (Eigen::Index c = 0; c < tets.T.rows(); ++c)
-      for (const auto& e : kEdges) {
+      for (const auto& e : kTetEdges) {
         const int a = tets.T(c, e[0]), b = tets.T(c, e[1]);
         if (a >= n1 || b >= n1 || !on_loop[a] || !on_loop[b]) continue;
         const std::uint64_t k = edge_key(a, b);
@@ -145,11 +151,10 @@ std::vector<int> edge_fan(const Eigen::MatrixXi& T, const std::vector<int>& tets
 // other's; the free vertices that break this at the least total |f| change
 // sign. Returns how many did.
 int settle_loop_edge_fans(const Eigen::MatrixXi& T, Eigen::Index num_fixed, Eigen::VectorXd& g) {
-  static const int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
   auto loop_vertex = [&](int v) { return v < num_fixed && g(v) == 0.0; };
   std::map<std::pair<int, int>, std::vector<int>> edge_tets;
   for (Eigen::Index c = 0; c < T.rows(); ++c)
-    for (const auto& e : kEdges) {
+    for (const auto& e : kTetEdges) {
       int a = T(c, e[0]), b = T(c, e[1]);
       if (!loop_vertex(a) || !loop_vertex(b)) continue;
       if (a > b) std::swap(a, b);
@@ -187,9 +192,8 @@ Midsurface zero_sheet(const mesh::TetMesh& tets, const Eigen::VectorXd& f, Eigen
   Eigen::VectorXd g = f;
   // Snap free vertices that would give slivers (an edge cut within `snap` of them).
   std::vector<char> to_zero(static_cast<std::size_t>(V.rows()), 0);
-  static const int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
   for (Eigen::Index c = 0; c < T.rows(); ++c)
-    for (const auto& e : kEdges) {
+    for (const auto& e : kTetEdges) {
       const int a = T(c, e[0]), b = T(c, e[1]);
       if (!(f(a) * f(b) < 0.0)) continue;
       const double t = f(a) / (f(a) - f(b));

@@ -26,6 +26,10 @@ namespace {
 
 Eigen::Vector3d P(const mesh::TriMesh& m, int i) { return m.V.row(i).transpose(); }
 
+double face_area(const mesh::TriMesh& m, Eigen::Index f) {
+  return 0.5 * (P(m, m.F(f, 1)) - P(m, m.F(f, 0))).cross(P(m, m.F(f, 2)) - P(m, m.F(f, 0))).norm();
+}
+
 // Expected chord direction of each side when walking the loop (sheet on the left).
 Eigen::Vector2d side_direction(DomainSide s, bool outer) {
   const double sg = outer ? 1.0 : -1.0;
@@ -500,7 +504,7 @@ void grow_to_fit_holes(const mesh::TriMesh& m, const std::vector<PolycubeLoop>& 
                        RectilinearDomain& dom) {
   double area = 0.0;
   for (Eigen::Index f = 0; f < m.F.rows(); ++f)
-    area += 0.5 * (P(m, m.F(f, 1)) - P(m, m.F(f, 0))).cross(P(m, m.F(f, 2)) - P(m, m.F(f, 0))).norm();
+    area += face_area(m, f);
   Eigen::Vector2d need = Eigen::Vector2d::Zero();
   for (const PolycubeLoop& L : loops)
     if (!L.outer) {
@@ -976,7 +980,7 @@ Eigen::VectorXd uv_jacobians(const mesh::TriMesh& m, const Eigen::MatrixXd& uv) 
   for (int f = 0; f < m.F.rows(); ++f) {
     const int a = m.F(f, 0), b = m.F(f, 1), c = m.F(f, 2);
     const double uva = 0.5 * ((uv(b, 0) - uv(a, 0)) * (uv(c, 1) - uv(a, 1)) - (uv(c, 0) - uv(a, 0)) * (uv(b, 1) - uv(a, 1)));
-    const double A = 0.5 * (P(m, b) - P(m, a)).cross(P(m, c) - P(m, a)).norm();
+    const double A = face_area(m, f);
     J(f) = A > 0 ? uva / A : (uva > 0 ? 1e300 : -1e300);
   }
   return J;
@@ -986,8 +990,7 @@ double squeezed_share(const mesh::TriMesh& sheet, const Eigen::VectorXd& jacobia
   std::vector<std::pair<double, double>> by_jacobian;  // (J, 3D area)
   double total = 0.0;
   for (Eigen::Index f = 0; f < sheet.F.rows(); ++f) {
-    const int a = sheet.F(f, 0), b = sheet.F(f, 1), c = sheet.F(f, 2);
-    const double area = 0.5 * (P(sheet, b) - P(sheet, a)).cross(P(sheet, c) - P(sheet, a)).norm();
+    const double area = face_area(sheet, f);
     by_jacobian.emplace_back(jacobian(f), area);
     total += area;
   }

@@ -19,14 +19,11 @@ std::array<DomainEdge, 4> box_sides(const Eigen::Vector4d& r) {
            {c00, c01, Eigen::Vector2d(-1, 0)}}};
 }
 
-}  // namespace
-
-BaseLayout base_layout(const InsetBase& base, double max_aspect) {
-  BaseLayout L;
-  L.sheet = base.mesh;
-  L.uv = base.uv;
-  L.domain = base.domain;
-  L.rectangles = domain_rectangles(L.domain, max_aspect);
+// L's rectangles, domain edges and crest segments from its domain, max_aspect and extra lines.
+void cut_domain(BaseLayout& L) {
+  L.rectangles = domain_rectangles(L.domain, L.max_aspect, L.extra);
+  L.domain_edges.clear();
+  L.crests.clear();
   const RectilinearDomain& D = L.domain;
 
   // The domain's own sides: outward of the outer boundary (the rectangle's
@@ -57,7 +54,27 @@ BaseLayout base_layout(const InsetBase& base, double max_aspect) {
     }
   }
   if (L.crests.empty()) throw internal_error("base layout: no rectangle side lies on M's boundary");
+}
+
+}  // namespace
+
+BaseLayout base_layout(const InsetBase& base, double max_aspect, const GridLines& extra) {
+  BaseLayout L;
+  L.sheet = base.mesh;
+  L.uv = base.uv;
+  L.domain = base.domain;
+  L.max_aspect = max_aspect;
+  L.extra = extra;
+  cut_domain(L);
   return L;
+}
+
+BaseLayout with_more_lines(const BaseLayout& L, const GridLines& more) {
+  BaseLayout out = L;
+  out.extra.u.insert(out.extra.u.end(), more.u.begin(), more.u.end());
+  out.extra.v.insert(out.extra.v.end(), more.v.begin(), more.v.end());
+  cut_domain(out);
+  return out;
 }
 
 }  // namespace igaprep::param

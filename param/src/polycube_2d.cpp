@@ -1035,9 +1035,22 @@ void split_long_intervals(std::vector<double>& lines, const std::vector<double>&
   sort_unique(lines);
 }
 
+// Adds each line strictly inside (0, extent) that is not within a
+// millionth of the extent of one already there.
+void add_lines(std::vector<double>& lines, const std::vector<double>& extra, double extent) {
+  const double tol = 1e-6 * extent;
+  for (const double x : extra) {
+    if (!(x > tol && x < extent - tol)) continue;
+    const bool near = std::any_of(lines.begin(), lines.end(), [&](double y) { return std::abs(x - y) <= tol; });
+    if (!near) lines.push_back(x);
+  }
+  sort_unique(lines);
+}
+
 }  // namespace
 
-std::vector<Eigen::Vector4d> domain_rectangles(const RectilinearDomain& dom, double max_aspect) {
+std::vector<Eigen::Vector4d> domain_rectangles(const RectilinearDomain& dom, double max_aspect,
+                                               const GridLines& extra) {
   std::vector<double> xs{0.0, dom.width}, ys{0.0, dom.height};
   std::vector<Eigen::Vector4d> boxes = dom.holes;
   for (const DomainArm& arm : dom.arms) boxes.push_back(arm_box(dom, arm));
@@ -1054,6 +1067,8 @@ std::vector<Eigen::Vector4d> domain_rectangles(const RectilinearDomain& dom, dou
     split_long_intervals(xs, ys0, max_aspect);
     split_long_intervals(ys, xs0, max_aspect);
   }
+  add_lines(xs, extra.u, dom.width);
+  add_lines(ys, extra.v, dom.height);
   std::vector<Eigen::Vector4d> rects;
   for (std::size_t j = 0; j + 1 < ys.size(); ++j)
     for (std::size_t i = 0; i + 1 < xs.size(); ++i) {

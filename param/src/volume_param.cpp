@@ -325,6 +325,7 @@ struct ShellBase {
   // ruled crest face, whose two long edges cannot be spread alike (the P2
   // edge is shared with the other crest face), so they are not spread.
   std::array<bool, 4> fixed_sides{};
+  ShellFaceOrigin origin;
 };
 
 void add_block(VolumeParam& out, int m, BlockKind kind, int source, int layer, int material, Eigen::MatrixXd samples,
@@ -348,8 +349,9 @@ void add_strategy1_bases(const VolumeContext& ctx, const std::vector<RectGrid>& 
   const int m = ctx.m;
   const int mid = (m - 1) / 2;
   for (std::size_t r = 0; r < rect.size(); ++r) {
-    faces.push_back({rect[r].base, rect[r].top});
-    faces.push_back({rect[r].base, rect[r].bottom});
+    const ShellFaceOrigin over{static_cast<int>(r), -1};
+    faces.push_back({rect[r].base, rect[r].top, false, false, -1, {}, over});
+    faces.push_back({rect[r].base, rect[r].bottom, false, false, -1, {}, over});
   }
   for (std::size_t c = 0; c < ctx.layout.crests.size(); ++c) {
     const CrestSegment& seg = ctx.layout.crests[c];
@@ -358,6 +360,7 @@ void add_strategy1_bases(const VolumeContext& ctx, const std::vector<RectGrid>& 
     fan.collapsed = true;
     fan.ruled = true;
     fan.ruled_mid = mid;
+    fan.origin = {seg.rectangle, static_cast<int>(c)};
     for (int j = 0; j < m; ++j)
       for (int k = 0; k < m; ++k) {
         const int q = side_index(m, seg.side, k);
@@ -382,7 +385,7 @@ void add_core_blocks(const VolumeContext& ctx, const std::vector<RectGrid>& rect
         for (int q = 0; q < m * m; ++q) s.row(q + m * m * k) = lerp(rect[r].base[q], lid[q], ctx.params[k]).transpose();
       add_block(out, m, top ? BlockKind::CoreTop : BlockKind::CoreBottom, static_cast<int>(r), 0, ctx.n - 1,
                 std::move(s), -1);
-      ShellBase face{lid, lid};
+      ShellBase face{lid, lid, false, false, -1, {}, {static_cast<int>(r), -1}};
       for (const CrestSegment& seg : ctx.layout.crests)
         if (seg.rectangle == static_cast<int>(r)) face.fixed_sides[static_cast<std::size_t>(seg.side)] = true;
       faces.push_back(std::move(face));
@@ -450,8 +453,9 @@ void add_crest_blocks(VolumeContext& ctx, const std::vector<RectGrid>& rect, Vol
         lower[k + m * j] = lerp(P.P1[k], P.P2[k], params[j]);  // the b = 1 face, (tau, a)
       }
     add_block(out, m, BlockKind::Crest, static_cast<int>(c), 0, ctx.n - 1, std::move(s), -1);
-    faces.push_back({upper, upper, false, true});  // ruled
-    faces.push_back({lower, lower, false, true});
+    const ShellFaceOrigin over{seg.rectangle, static_cast<int>(c)};
+    faces.push_back({upper, upper, false, true, -1, {}, over});  // ruled
+    faces.push_back({lower, lower, false, true, -1, {}, over});
   }
 }
 
@@ -594,8 +598,27 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
   out.rectangles = static_cast<int>(layout.rectangles.size());
   out.crests = static_cast<int>(layout.crests.size());
   out.core_faces = static_cast<int>(faces.size());
+  for (const ShellBase& f : faces) out.face_origins.push_back(f.origin);
   add_shell_blocks(ctx, H, faces, out);
   return out;
+}
+
+GridLines lines_halving_faces(const BaseLayout& layout, const VolumeParam& vp,
+                              const std::vector<FaceDirection>& faces) {
+  GridLines lines;
+  for (const FaceDirection& fd : faces) {
+    const ShellFaceOrigin& o = vp.face_origins.at(static_cast<std::size_t>(fd.face));
+    const Eigen::Vector4d& r = layout.rectangles.at(static_cast<std::size_t>(o.rectangle));
+    bool along_u = fd.direction == 0;
+    if (o.crest >= 0) {
+      if (fd.direction != 0) continue;
+      const CrestSegment& seg = layout.crests.at(static_cast<std::size_t>(o.crest));
+      along_u = std::abs(seg.b.y() - seg.a.y()) < std::abs(seg.b.x() - seg.a.x());
+    }
+    if (along_u) lines.u.push_back(0.5 * (r(0) + r(2)));
+    else lines.v.push_back(0.5 * (r(1) + r(3)));
+  }
+  return lines;
 }
 
 }  // namespace igaprep::param

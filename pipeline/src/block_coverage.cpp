@@ -43,13 +43,15 @@ double grid_volume(const Eigen::MatrixXd& s, int m) {
   return v;
 }
 
-// The sides labelled T1 (label 0) of every block, their sample grids cut into triangles.
-mesh::TriMesh t1_sides(const param::VolumeParam& vp) {
+// The sides labelled T1 (label 0) of every block, their sample grids cut
+// into triangles; `block` (if given) receives each triangle's block.
+mesh::TriMesh t1_sides(const param::VolumeParam& vp, std::vector<int>* block = nullptr) {
   const int m = static_cast<int>(vp.params.size());
   std::vector<Eigen::Vector3d> V;
   std::vector<Eigen::Vector3i> F;
-  for (const param::SampledBlock& b : vp.blocks)
+  for (std::size_t bi = 0; bi < vp.blocks.size(); ++bi)
     for (const spline::Side side : spline::Side::all()) {
+      const param::SampledBlock& b = vp.blocks[bi];
       if (b.side_label[static_cast<std::size_t>(side.array_index())] != 0) continue;
       const int d = side.direction(), fixed = side.parameter() ? m - 1 : 0;
       const auto [t0, t1] = side.tangent_directions();
@@ -67,6 +69,7 @@ mesh::TriMesh t1_sides(const param::VolumeParam& vp) {
           const int a = first + x + m * y;
           F.emplace_back(a, a + 1, a + m + 1);
           F.emplace_back(a, a + m + 1, a + m);
+          if (block) block->insert(block->end(), 2, static_cast<int>(bi));
         }
     }
   mesh::TriMesh t;
@@ -131,6 +134,30 @@ double t1_sample_gap(const param::VolumeParam& vp, const mesh::TriMesh& t1) {
   if (sides.F.rows() == 0) return std::numeric_limits<double>::infinity();
   const std::vector<double> distance = distances_to_sides(sides, t1);
   return *std::max_element(distance.begin(), distance.end()) / iga_check::mesh_diagonal(t1);
+}
+
+std::vector<param::FaceDirection> faces_missing_t1(const param::VolumeParam& vp, const mesh::TriMesh& t1,
+                                                   double limit) {
+  std::vector<int> block;
+  const mesh::TriMesh sides = t1_sides(vp, &block);
+  if (sides.F.rows() == 0) return {};
+  const param::SurfaceProjector projector(sides.V, sides.F);
+  const double reach = limit * iga_check::mesh_diagonal(t1);
+  std::vector<param::FaceDirection> out;
+  for (Eigen::Index v = 0; v < t1.V.rows(); ++v) {
+    const Eigen::Vector3d x = t1.V.row(v).transpose();
+    int triangle = -1;
+    if (!((projector.closest(x, &triangle) - x).norm() > reach)) continue;
+    const param::SampledBlock& b = vp.blocks.at(static_cast<std::size_t>(block.at(static_cast<std::size_t>(triangle))));
+    if (b.kind != param::BlockKind::Shell) continue;
+    // Both directions: on a kitten's ear cut along the longer direction
+    // alone, the samples came 0.543 % off T1 where both gave 0.381 %.
+    out.push_back({b.source, 0});
+    out.push_back({b.source, 1});
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
 }
 
 std::vector<std::string> block_coverage_findings(const param::VolumeParam& vp, const Surfaces& surfaces,

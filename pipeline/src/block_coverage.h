@@ -19,6 +19,13 @@ namespace igaprep::pipeline {
 // when no side lies on T1.
 double t1_sample_gap(const param::VolumeParam& vp, const mesh::TriMesh& t1);
 
+// Where the blocks' sides on T1 are too coarse: for each vertex of t1 that
+// lies farther than `limit` (a share of t1's diagonal) from every block side
+// on T1, the shell face whose side is nearest, and the direction of that
+// face along which the nearest sample cell is the longer; sorted, each once.
+std::vector<param::FaceDirection> faces_missing_t1(const param::VolumeParam& vp, const mesh::TriMesh& t1,
+                                                   double limit);
+
 // One line per finding (empty when the blocks cover the input).
 std::vector<std::string> block_coverage_findings(const param::VolumeParam& vp, const Surfaces& surfaces,
                                                  const iga_check::CheckOptions& limits);

@@ -368,7 +368,7 @@ void refuse_repeated_labels(const std::vector<CaseSurface>& surfaces, const Obje
 void read_sections(ObjectReader& r, const std::string& file, Case& c) {
   if (const json* t = r.find("tetmesh")) c.tetmesh = read_tetmesh(*t, file);
   if (const json* m = r.find("midsurface")) c.midsurface = read_midsurface_section(*m, file);
-  if (const json* d = r.find("decomposition")) read_decomposition_section(*d, file, c.base, c.volume, c.auto_spread_deviation);
+  if (const json* d = r.find("decomposition")) read_decomposition_section(*d, file, c.base, c.volume, c.auto_spread_deviation, c.cover_rounds);
   if (const json* f = r.find("fit")) read_fit_section(*f, file, c.fit, c.fit_retry, c.surface_fit, c.jacobian);
   if (const json* e = r.find("export")) c.export_formats = read_export(*e, file);
   if (const json* k = r.find("check")) c.check = read_check(*k, file);

@@ -95,7 +95,8 @@ param::MidsurfaceOptions read_midsurface_section(const json& section, const std:
 }
 
 void read_decomposition_section(const json& section, const std::string& file, param::BaseSurfaceOptions& base,
-                                param::VolumeParamOptions& volume, bool& auto_spread_deviation) {
+                                param::VolumeParamOptions& volume, bool& auto_spread_deviation,
+                                int& cover_rounds) {
   ObjectReader r(section, "decomposition", file);
   base.inset = r.number_in("inset", base.inset, 0.05, 0.95);
   base.rim_reach = r.number_in("rim_reach", base.rim_reach, 0.0, 1e3);
@@ -123,6 +124,7 @@ void read_decomposition_section(const json& section, const std::string& file, pa
     volume.spread_deviation = r.number_in("spread_deviation", volume.spread_deviation, 0.0, 0.1);
     auto_spread_deviation = false;
   }
+  cover_rounds = r.integer("cover_rounds", cover_rounds, 0, 4);
   r.refuse_unknown();
 }
 

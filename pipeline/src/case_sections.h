@@ -20,7 +20,8 @@ namespace igaprep::pipeline {
 param::MidsurfaceOptions read_midsurface_section(const nlohmann::json& section, const std::string& file);
 // The decomposition section holds the base surface's keys and the volume's.
 void read_decomposition_section(const nlohmann::json& section, const std::string& file, param::BaseSurfaceOptions& base,
-                                param::VolumeParamOptions& volume, bool& auto_spread_deviation);
+                                param::VolumeParamOptions& volume, bool& auto_spread_deviation,
+                                int& cover_rounds);
 void read_fit_section(const nlohmann::json& section, const std::string& file, spline::BlockFitOptions& fit,
                       CaseFitRetry& retry, spline::SurfaceFitOptions& surface,
                       spline::JacobianOptimizationOptions& jacobian);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "igaprep/core/text.h"
 #include "igaprep/iga_check/criteria.h"
@@ -27,6 +28,30 @@ double largest_excess(const iga_check::CheckReport& r) {
   return worst;
 }
 
+// The failed fidelity figure over its limit when fidelity is the one
+// failed criterion; 0 otherwise.
+double fidelity_alone_excess(const iga_check::CheckReport& r) {
+  double excess = 0.0;
+  for (const iga_check::Criterion& c : r.criteria) {
+    if (c.passed) continue;
+    if (c.name != "fidelity" || !(c.limit > 0.0)) return 0.0;
+    excess = std::abs(c.value) / c.limit;
+  }
+  return excess;
+}
+
+// d refuses a finer fit; where fidelity alone failed within kFaceFitReach
+// and the faces were not fitted yet, it becomes a retry that fits them.
+FitRetryDecision or_fit_faces(FitRetryDecision d, const Check& check, int elements, bool faces_fitted) {
+  const double excess = fidelity_alone_excess(check.report);
+  if (faces_fitted || !(excess > 0.0) || excess > kFaceFitReach) return d;
+  d.retry = true;
+  d.fit_faces = true;
+  d.elements = elements;
+  d.reason = text("no finer fit: %s; fidelity alone failed, %.2f times its limit", d.reason.c_str(), excess);
+  return d;
+}
+
 }  // namespace
 
 double folded_sample_share(const param::VolumeParam& vp) {
@@ -43,7 +68,7 @@ std::string repair_skip_reason(const param::VolumeParam& vp) {
               100.0 * share, 100.0 * kRepairFoldedShare);
 }
 
-FitRetryDecision decide_fit_retry(const Check& check, const param::VolumeParam& vp, int elements,
+FitRetryDecision decide_fit_retry(const Check& check, const param::VolumeParam& vp, int elements, bool faces_fitted,
                                   const CaseFitRetry& settings) {
   FitRetryDecision d;
   if (check.report.passed) {
@@ -65,7 +90,7 @@ FitRetryDecision decide_fit_retry(const Check& check, const param::VolumeParam& 
     d.reason = text("the blocks' folded sample cells are %.2f %% of their face cells (more than %.1f %%): a finer fit "
                     "would follow the folds",
                     100.0 * share, 100.0 * kRetryFoldedShare);
-    return d;
+    return or_fit_faces(d, check, elements, faces_fitted);
   }
   // 1.5 times as many, or as many as max_model_elements allows.
   int next = std::min(settings.max_elements, std::max(elements + 1, (3 * elements + 1) / 2));
@@ -86,7 +111,7 @@ FitRetryDecision decide_fit_retry(const Check& check, const param::VolumeParam& 
     d.reason = text("fidelity or volume is %.2f times its limit, and %d elements per direction would bring it to "
                     "%.2f times at best (the distance falls like the square of the element size)",
                     excess, next, excess / reach);
-    return d;
+    return or_fit_faces(d, check, elements, faces_fitted);
   }
   d.retry = true;
   d.elements = next;
@@ -123,12 +148,23 @@ FitAttempt best_fit_attempt(const Case& c, const std::function<MadeAttempt(const
       return best;
     }
     best.settings = next;
+    best.rectangles = made.vp.rectangles;
+    best.boundary_segments = made.vp.crests;
     best.fit = std::move(made.fit);
     best.check = std::move(made.check);
-    const FitRetryDecision decision = decide_fit_retry(best.check, made.vp, next.fit.elements, c.fit_retry);
+    const FitRetryDecision decision =
+        decide_fit_retry(best.check, made.vp, next.fit.elements, next.surface_fit.iterations > 0, c.fit_retry);
     if (!decision.retry) {
       if (!best.check.report.passed) say("no finer fit: " + decision.reason);
       return best;
+    }
+    if (decision.fit_faces) {
+      next.surface_fit.iterations = kFaceFitIterations;
+      next.surface_fit.smoothing = kFaceFitSmoothing;
+      say(decision.reason + text(": the faces on the input surfaces are fitted to them ('fit.surface_iterations' %d, "
+                                 "'fit.surface_smoothing' %g)",
+                                 kFaceFitIterations, kFaceFitSmoothing));
+      continue;
     }
     say(decision.reason + text(": the blocks are sampled and fitted again with %d elements per direction "
                                "('fit.max_elements' %d)",
@@ -138,9 +174,14 @@ FitAttempt best_fit_attempt(const Case& c, const std::function<MadeAttempt(const
 }
 
 FitAttempt fit_and_check(const Case& c, const Surfaces& surfaces, const Decomposition& d, Observer& observer) {
+  std::optional<param::VolumeParam> last;  // the blocks of the last attempt
+  int last_elements = 0;
   auto make = [&](const Case& attempt) {
     MadeAttempt m;
-    m.vp = param_stage(attempt, surfaces, d, observer);
+    const bool same_samples = last && last_elements == attempt.fit.elements;
+    m.vp = same_samples ? *last : param_stage(attempt, surfaces, d, observer);
+    last = m.vp;
+    last_elements = attempt.fit.elements;
     m.fit = fit_stage(attempt, surfaces, d, m.vp, observer);
     m.check = check_stage(m.fit.model, surfaces.inputs, attempt.check, observer);
     return m;

@@ -268,14 +268,15 @@ void run_stages(const Case& c, Observer& outer, OutputFolder* folder, RunResult&
   const param::MidsurfaceResult mid = midsurface_stage(c, surfaces, observer);
   const param::BaseSurface base = base_stage(c, surfaces, mid, observer);
   const Decomposition d = decompose_stage(c, surfaces, base, observer);
-  r.rectangles = static_cast<int>(d.layout.rectangles.size());
-  r.boundary_segments = static_cast<int>(d.layout.crests.size());
   std::optional<ReduceFigures> reduced;
   Fit fit;
   Check check;
   int fit_attempts = 1;
   if (c.reduce) {  // the reduction checks the reduced model; a finer fit is not tried
-    fit = fit_stage(c, surfaces, d, param_stage(c, surfaces, d, observer), observer);
+    const param::VolumeParam vp = param_stage(c, surfaces, d, observer);
+    r.rectangles = vp.rectangles;  // the param stage may have halved some (cover_rounds)
+    r.boundary_segments = vp.crests;
+    fit = fit_stage(c, surfaces, d, vp, observer);
     fill_provenance(c, fit.model);
     CheckedReduction cr = reduce_checked(fit.model, *c.reduce, surfaces.inputs, c.check, observer);
     fit.model = std::move(cr.reduction.model);
@@ -285,6 +286,8 @@ void run_stages(const Case& c, Observer& outer, OutputFolder* folder, RunResult&
     FitAttempt kept = fit_and_check(c, surfaces, d, observer);
     fill_provenance(kept.settings, kept.fit.model);
     fit_attempts = kept.attempts;
+    r.rectangles = kept.rectangles;
+    r.boundary_segments = kept.boundary_segments;
     fit = std::move(kept.fit);
     check = std::move(kept.check);
   }

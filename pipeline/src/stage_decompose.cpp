@@ -1,3 +1,5 @@
+#include <set>
+
 #include <Eigen/Core>
 
 #include "block_coverage.h"
@@ -76,22 +78,60 @@ constexpr double kKeptBelowShareOfGap = 0.75;
 // "spread_deviation": "auto". Where the blocks' sides labelled T1 miss T1
 // by more than the fidelity limit, the fit cannot reach it: vp is built
 // again with the shell faces spread where T1 bulges between samples, and
-// kept if its sides come markedly nearer T1. Returns a line for the stage's
-// summary (empty when nothing was done).
+// kept (with the options that made it) if its sides come markedly nearer
+// T1. Returns a line for the stage's summary (empty when nothing was done).
 std::string spread_bulges_if_needed(const Case& c, const Decomposition& d, const std::vector<double>& params,
-                                    param::VolumeParamOptions options, const mesh::TriMesh& t1,
+                                    param::VolumeParamOptions& options, const mesh::TriMesh& t1,
                                     param::VolumeParam& vp) {
   const double gap = t1_sample_gap(vp, t1);
   if (!(gap > c.check.fidelity_limit)) return {};
-  options.spread_deviation = kBulgeShareOfFidelityLimit * c.check.fidelity_limit;
-  param::VolumeParam again = param::build_volume_param(d.H, d.w, d.layout, params, options);
+  param::VolumeParamOptions spread = options;
+  spread.spread_deviation = kBulgeShareOfFidelityLimit * c.check.fidelity_limit;
+  param::VolumeParam again = param::build_volume_param(d.H, d.w, d.layout, params, spread);
   const double gap_again = t1_sample_gap(again, t1);
   const bool kept = gap_again < kKeptBelowShareOfGap * gap;
-  if (kept) vp = std::move(again);
+  if (kept) {
+    vp = std::move(again);
+    options = spread;
+  }
   return text("the samples missed T1 by %.3f %% of the diagonal (fidelity limit %.3f %%): spread where T1 bulges "
               "between samples by more than %.3f %% ('decomposition.spread_deviation' %g): %.3f %%, %s",
-              100.0 * gap, 100.0 * c.check.fidelity_limit, 100.0 * options.spread_deviation, options.spread_deviation,
+              100.0 * gap, 100.0 * c.check.fidelity_limit, 100.0 * spread.spread_deviation, spread.spread_deviation,
               100.0 * gap_again, kept ? "kept" : "not kept");
+}
+
+// "decomposition.cover_rounds". Where the blocks' sides on T1 still miss it
+// by more than the fidelity limit (a part of T1 reached through too few
+// samples: a kitten's ear spanned by cells 3 % of the diagonal wide), the
+// rectangles under the shell faces nearest the missed vertices are halved,
+// so those faces' shells get twice the streamlines, and vp is built again;
+// kept when its sides come markedly nearer T1, repeated while they do.
+// Returns a line for the stage's summary (empty when nothing was done).
+std::string halve_rectangles_if_needed(const Case& c, const Decomposition& d, const std::vector<double>& params,
+                                       const param::VolumeParamOptions& options, const mesh::TriMesh& t1,
+                                       param::VolumeParam& vp) {
+  std::string note;
+  param::BaseLayout layout = d.layout;
+  double gap = t1_sample_gap(vp, t1);
+  for (int round = 0; round < c.cover_rounds && gap > c.check.fidelity_limit; ++round) {
+    const std::vector<param::FaceDirection> faces = faces_missing_t1(vp, t1, c.check.fidelity_limit);
+    if (faces.empty()) break;
+    std::set<int> distinct;
+    for (const param::FaceDirection& f : faces) distinct.insert(f.face);
+    param::BaseLayout finer = param::with_more_lines(layout, param::lines_halving_faces(layout, vp, faces));
+    param::VolumeParam again = param::build_volume_param(d.H, d.w, finer, params, options);
+    const double gap_again = t1_sample_gap(again, t1);
+    const bool kept = gap_again < kKeptBelowShareOfGap * gap;
+    note += text("%sthe samples missed T1 by %.3f %% of the diagonal next to %zu shell faces: their rectangles "
+                 "halved ('decomposition.cover_rounds' %d), %zu -> %zu rectangles, %.3f %%, %d folded sample cells, %s",
+                 note.empty() ? "" : "; ", 100.0 * gap, distinct.size(), c.cover_rounds, layout.rectangles.size(),
+                 finer.rectangles.size(), 100.0 * gap_again, again.folded_cells, kept ? "kept" : "not kept");
+    if (!kept) break;
+    vp = std::move(again);
+    layout = std::move(finer);
+    gap = gap_again;
+  }
+  return note;
 }
 
 }  // namespace
@@ -129,6 +169,9 @@ param::VolumeParam param_stage(const Case& c, const Surfaces& surfaces, const De
   if (c.auto_spread_deviation && c.volume.strategy == 2 && !surfaces.inputs.empty()) {
     spread_note = spread_bulges_if_needed(c, d, params, options, surfaces.inputs.front(), vp);
   }
+  std::string cover_note;
+  if (c.cover_rounds > 0 && !surfaces.inputs.empty())
+    cover_note = halve_rectangles_if_needed(c, d, params, options, surfaces.inputs.front(), vp);
   StageSummary s{"param", timer.seconds(),
                  text("strategy %d, core inside w = %.3f (w0): %zu blocks (%d core faces x %d layers + core), %d streamlines "
                       "(%d faces spread; their cells folded on T1 %d -> %d), %d folded sample cells",
@@ -144,6 +187,7 @@ param::VolumeParam param_stage(const Case& c, const Surfaces& surfaces, const De
     s.details.push_back(line);
   }
   if (!spread_note.empty()) s.details.push_back(spread_note);
+  if (!cover_note.empty()) s.details.push_back(cover_note);
   for (std::string& line : block_coverage_findings(vp, surfaces, c.check)) s.details.push_back(std::move(line));
   s.seconds = timer.seconds();
   observer.stage_finished(s);

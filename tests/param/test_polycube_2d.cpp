@@ -162,6 +162,24 @@ TEST(DomainRectangles, LongIntervalsAreCutIntoEqualParts) {
   }
 }
 
+// Extra lines cut the whole grid like the holes' sides; one on the domain's
+// edge or within a millionth of a line already there adds nothing.
+TEST(DomainRectangles, ExtraLinesCutTheWholeGrid) {
+  RectilinearDomain d;
+  d.width = 10.0;
+  d.height = 1.0;
+  d.holes.push_back(Eigen::Vector4d(4.0, 0.25, 6.0, 0.75));
+  GridLines extra;
+  extra.u = {2.0, 4.0 + 1e-7, 10.0};
+  extra.v = {0.5};
+  const std::vector<Eigen::Vector4d> cut = domain_rectangles(d, 0.0, extra);
+  EXPECT_EQ(cut.size(), 14u);  // 4 columns x 4 rows less the hole's 2 cells
+  double area = 0.0;
+  for (const auto& r : cut) area += (r(2) - r(0)) * (r(3) - r(1));
+  EXPECT_NEAR(area, 10.0 - 1.0, 1e-12);
+  EXPECT_EQ(domain_rectangles(d, 0.0, GridLines{{0.0, 1e-9}, {}}).size(), 8u);
+}
+
 // Four unit right triangles in 3D (area 0.5 each); the squeezed share is
 // the area under a tenth of the area-weighted median Jacobian.
 TEST(SqueezedShare, CountsTheAreaUnderATenthOfTheMedianScale) {

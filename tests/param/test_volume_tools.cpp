@@ -1017,6 +1017,38 @@ TEST(BaseLayout, FromAnInsetSheet) {
   }
 }
 
+// A lid's rectangle is halved in the direction asked, a crest face's along
+// its segment only; the layout cut by the lines has the halves.
+TEST(BaseLayout, LinesHalvingFacesCutTheirRectangles) {
+  const Eigen::Vector4d hole(1.5, 1.0, 2.5, 2.0);
+  const mesh::TriMesh sheet = grid_sheet(4.0, 3.0, 0.25, {hole});
+  Polycube2D pc;
+  pc.domain.width = 4.0;
+  pc.domain.height = 3.0;
+  pc.domain.holes = {hole};
+  pc.domain.hole_loop = {1};
+  pc.uv = sheet.V.leftCols(2);
+  const BaseLayout L = base_layout(inset_base_surface(sheet, pc, 0.25, 20));
+  ASSERT_EQ(L.rectangles.size(), 8u);
+  // Rectangle 0 is the bottom left one; its bottom side (0) lies on M's boundary.
+  const auto horizontal = std::find_if(L.crests.begin(), L.crests.end(),
+                                       [](const CrestSegment& c) { return c.rectangle == 0 && c.side == 0; });
+  ASSERT_NE(horizontal, L.crests.end());
+  VolumeParam vp;
+  vp.face_origins = {{0, -1}, {horizontal->rectangle, static_cast<int>(horizontal - L.crests.begin())}};
+  const Eigen::Vector4d& lid = L.rectangles[0];
+  const Eigen::Vector4d& crest = L.rectangles[static_cast<std::size_t>(horizontal->rectangle)];
+  const GridLines lines = lines_halving_faces(L, vp, {{0, 1}, {1, 0}, {1, 1}});
+  ASSERT_EQ(lines.u.size(), 1u);  // the crest face along its segment; across it none
+  ASSERT_EQ(lines.v.size(), 1u);  // the lid across v
+  EXPECT_DOUBLE_EQ(lines.u[0], 0.5 * (crest(0) + crest(2)));
+  EXPECT_DOUBLE_EQ(lines.v[0], 0.5 * (lid(1) + lid(3)));
+  const BaseLayout finer = with_more_lines(L, lines);
+  EXPECT_EQ(finer.rectangles.size(), 15u);  // 4 x 4 less the hole's cell: both lines pass beside the hole
+  EXPECT_EQ(finer.extra.u.size(), 1u);
+  EXPECT_EQ(finer.crests.size(), 20u);  // the outer sides each line reaches cut once more: 16 + 2 + 2
+}
+
 // ---------------------------------------------------------------- build_volume_param options
 
 TEST(BuildVolumeParam, OptionValidation) {

@@ -34,10 +34,16 @@ struct BaseLayout {
   std::vector<Eigen::Vector4d> rectangles;  // (umin, vmin, umax, vmax)
   std::vector<CrestSegment> crests;
   std::vector<DomainEdge> domain_edges;
+  double max_aspect = 0.0;  // as given to base_layout
+  GridLines extra;          // grid lines added beyond the holes', arms' and max_aspect's
 };
 
 // Inputs: the inset base surface; the largest aspect of the domain's grid
-// intervals (domain_rectangles; 0: the holes' grid as it is). Output: its layout.
-BaseLayout base_layout(const InsetBase& base, double max_aspect = 0.0);
+// intervals (domain_rectangles; 0: the holes' grid as it is); extra grid
+// lines. Output: its layout.
+BaseLayout base_layout(const InsetBase& base, double max_aspect = 0.0, const GridLines& extra = {});
+
+// The same sheet and domain cut by more grid lines: L's own and `more`.
+BaseLayout with_more_lines(const BaseLayout& L, const GridLines& more);
 
 }  // namespace igaprep::param

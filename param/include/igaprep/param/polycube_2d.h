@@ -172,8 +172,13 @@ double squeezed_share(const mesh::TriMesh& sheet, const Eigen::VectorXd& jacobia
 // and the outer sides that lie inside the domain. Each (umin, vmin, umax, vmax). With
 // max_aspect > 0, every interval of that grid longer than max_aspect times
 // the longest interval across it is cut into equal parts (a long, narrow
-// domain, like a propeller's, gets blocks of a sensible shape).
-std::vector<Eigen::Vector4d> domain_rectangles(const RectilinearDomain& domain, double max_aspect = 0.0);
+// domain, like a propeller's, gets blocks of a sensible shape). Lines in
+// `extra` (u = x and v = y, strictly inside the domain) cut it as well.
+struct GridLines {
+  std::vector<double> u, v;
+};
+std::vector<Eigen::Vector4d> domain_rectangles(const RectilinearDomain& domain, double max_aspect = 0.0,
+                                               const GridLines& extra = {});
 
 struct Polycube2D {
   SheetFrame frame;

@@ -99,9 +99,19 @@ struct SampledBlock {
 // per direction.
 void orient_block(SampledBlock& block, int m);
 
+// Where a face the shell grows from (a shell block's `source`) lies in M's
+// layout: the rectangle it is over, and the crest segment when it is one of
+// a crest's outer faces (strategy 2) or a crest's fan (strategy 1); -1: a lid
+// (or, in strategy 1, M itself).
+struct ShellFaceOrigin {
+  int rectangle = -1;
+  int crest = -1;
+};
+
 struct VolumeParam {
   std::vector<double> params;  // sample parameters in each direction (ascending, 0 and 1 included)
   std::vector<SampledBlock> blocks;
+  std::vector<ShellFaceOrigin> face_origins;  // per shell face
   double w0 = 0.0;
   int rectangles = 0, crests = 0, core_faces = 0, layers = 0;
   int streamlines = 0;     // traced from the core's outer faces to T1
@@ -119,5 +129,21 @@ struct VolumeParam {
 // when a ray or streamline fails (with the point).
 VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, const BaseLayout& layout,
                                const std::vector<double>& params, const VolumeParamOptions& options = {});
+
+// A shell face (a shell block's `source`) and one of its two sample
+// directions: 0, along u on a lid and along the segment on a crest's face;
+// 1, along v on a lid and across the crest on a crest's face.
+struct FaceDirection {
+  int face = 0;
+  int direction = 0;
+  bool operator<(const FaceDirection& o) const { return face != o.face ? face < o.face : direction < o.direction; }
+  bool operator==(const FaceDirection& o) const { return face == o.face && direction == o.direction; }
+};
+
+// Grid lines that halve the rectangles the given faces lie over, across the
+// given directions (a crest's face across the crest has no line of the
+// layout to add and is passed over). Where a face's shell reaches T1
+// through too few samples, the halved rectangle gives it twice as many.
+GridLines lines_halving_faces(const BaseLayout& layout, const VolumeParam& vp, const std::vector<FaceDirection>& faces);
 
 }  // namespace igaprep::param

@@ -116,6 +116,12 @@ struct Case {
   // is 0 unless the blocks' samples miss T1 by more than check.fidelity_limit
   // (the param stage then runs again with a share of that limit).
   bool auto_spread_deviation = true;
+  // "decomposition.cover_rounds": while the blocks' samples miss T1 by more
+  // than check.fidelity_limit, the layout's rectangles under the shell faces
+  // nearest the missed parts are halved and the param stage runs again, at
+  // most this many times (0: never; docs/decomposition.md, "Rectangles halved
+  // where T1 is missed").
+  int cover_rounds = 2;
   spline::BlockFitOptions fit;          // section "fit"
   CaseFitRetry fit_retry;               // section "fit", keys max_elements, max_model_elements
   spline::SurfaceFitOptions surface_fit;         // section "fit", keys surface_* (iterations 0: off)

@@ -42,19 +42,34 @@ double folded_sample_share(const param::VolumeParam& vp);
 // kRepairFoldedShare of their face cells folded), or "" when it is.
 std::string repair_skip_reason(const param::VolumeParam& vp);
 
+// Where fidelity alone failed by at most this many times its limit and a
+// finer fit would not help (folded samples, or out of its reach), the faces
+// on the input surfaces are fitted to them instead (fit_model_surface.h):
+// the kitten's ear, 0.537 % of the diagonal at 6 elements with 1.18 % of
+// its sample cells folded, came to 0.388 % with every element positive.
+constexpr double kFaceFitReach = 2.0;
+// That fit's settings: the kitten's measured ones (docs/decomposition.md,
+// "Fitting the faces to the input").
+constexpr int kFaceFitIterations = 20;
+constexpr double kFaceFitSmoothing = 0.003;
+
 struct FitRetryDecision {
   bool retry = false;
-  int elements = 0;    // per direction for the next attempt (when retry)
-  std::string reason;  // why or why not, one clause for the run's summary
+  int elements = 0;        // per direction for the next attempt (when retry)
+  bool fit_faces = false;  // the next attempt fits the faces to the input (kFaceFit*)
+  std::string reason;      // why or why not, one clause for the run's summary
 };
 
 // A retry is made when the check failed on the Jacobian, fidelity or volume
 // only, the samples are sound (kRetryFoldedShare), the caps allow the finer
 // count, and fidelity and volume are within reach of their limits: at most
-// (finer / present elements)^2 times them.
+// (finer / present elements)^2 times them. Where the samples or the reach
+// refuse it, fidelity alone failed within kFaceFitReach, and the faces were
+// not fitted yet, the retry keeps the elements and fits the faces.
 // Inputs: the check of the attempt just made, its sampled blocks, the
-// elements per direction it used, the case's settings.
-FitRetryDecision decide_fit_retry(const Check& check, const param::VolumeParam& vp, int elements,
+// elements per direction it used, whether its faces were fitted to the
+// input, the case's settings.
+FitRetryDecision decide_fit_retry(const Check& check, const param::VolumeParam& vp, int elements, bool faces_fitted,
                                   const CaseFitRetry& settings);
 
 // Elements of a check not certified positive (degenerate ones count unless
@@ -71,6 +86,7 @@ struct FitAttempt {
   Fit fit;
   Check check;
   int attempts = 0;  // fits made, the kept one among them
+  int rectangles = 0, boundary_segments = 0;  // of the layout its blocks were built on
 };
 
 // One attempt as the loop sees it: the fit, its check and the sampled
@@ -88,8 +104,9 @@ FitAttempt best_fit_attempt(const Case& c, const std::function<MadeAttempt(const
                             const std::function<void(const std::string&)>& say);
 
 // The param, fit and check stages; then again with more elements per
-// direction while decide_fit_retry says so and each finer attempt is better
-// than the best so far. Each decision after a failed check is a "retry"
+// direction (or the faces fitted) while decide_fit_retry says so and each
+// attempt is better than the best so far; an attempt with the elements of
+// the last one reuses its sampled blocks. Each decision after a failed check is a "retry"
 // summary line (none when the first check passes). Output: the best attempt.
 FitAttempt fit_and_check(const Case& c, const Surfaces& surfaces, const Decomposition& d, Observer& observer);
 

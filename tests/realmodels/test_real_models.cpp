@@ -70,12 +70,42 @@ TEST(RealModels, TorusGenus3PassesWithDefaultKeys) {
 }
 
 
+// kitten.obj (genus 1), every key at its default but the validation (off to
+// keep the test short): its ear was reached through too few samples
+// (fidelity 1.439 %). The param stage halves the rectangles under the faces
+// that miss it (11 -> 54), and where fidelity alone still fails (0.537 %,
+// the samples too folded for a finer fit) the faces are fitted to the
+// input. 2026-12-07: every element positive, min scaled Jacobian 0.240,
+// fidelity 0.388 %, volume -0.028 %; 190 s.
+TEST(RealModels, TheKittensCheckPassesWithDefaultKeys) {
+  const std::string obj = std::string(IGAPREP_SHARED_MODELS_DIR) + "/kitten.obj";
+  if (!std::filesystem::exists(obj)) GTEST_SKIP() << "shared model " << obj << " is absent";
+  const std::string dir = scratch_dir("kitten");
+  const std::string c = dir + "/case.json";
+  std::ofstream(c) << json{{"surfaces", {obj}}, {"validation", {{"enabled", false}}}}.dump();
+  const CliResult r = run_cli("run " + c + " -o " + dir + "/out");
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const json report = json::parse(read_all(dir + "/out/report.json"));
+  EXPECT_EQ(figure(report, "negative_elements"), 0.0);
+  EXPECT_EQ(figure(report, "undecided_elements"), 0.0);
+  EXPECT_GE(figure(report, "min_scaled_jacobian"), 0.2);
+  EXPECT_LE(figure(report, "fidelity_relative_kitten"), 0.005);
+  EXPECT_LE(std::abs(figure(report, "volume_difference_region_0")), 0.005);
+  EXPECT_EQ(figure(report, "elements_per_direction"), 6.0);
+  EXPECT_EQ(figure(report, "fit_attempts"), 2.0) << "the second with the faces fitted";
+  EXPECT_NE(r.out.find("their rectangles halved"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("the faces on the input surfaces are fitted to them"), std::string::npos) << r.out;
+}
+
 // hand.obj (genus 0), the repair and the validation off so that the test
-// stays short (28 s): its blocks cover the hand, all five fingers (cut
-// between its two sides, each finger an arm of the domain). It does not
-// pass yet: negative elements from folded samples, and the wrist (2026-12-07:
-// 1,014 negative without the repair, fidelity 1.21 %, volume -0.17 %; with
-// every key at its default 197 negative, 1.207 %, -0.19 %, 293 s).
+// stays short (about 200 s): its blocks cover the hand, all five fingers
+// (cut between its two sides, each finger an arm of the domain), and the
+// rectangles under the wrist's and fingertips' faces are halved. It does
+// not pass yet: negative elements from folded samples (2026-12-07, before
+// the halving: 1,014 negative without the repair, fidelity 1.21 %, volume
+// -0.17 %; with every key at its default 197 negative, 1.207 %, -0.19 %,
+// 293 s; with the halving, repair off: 2,660 negative of 181,008, fidelity
+// 0.540 %, volume -0.049 %).
 TEST(RealModels, TheHandsModelCoversItsFiveFingers) {
   const std::string obj = std::string(IGAPREP_SHARED_MODELS_DIR) + "/hand.obj";
   if (!std::filesystem::exists(obj)) GTEST_SKIP() << "shared model " << obj << " is absent";
@@ -86,7 +116,7 @@ TEST(RealModels, TheHandsModelCoversItsFiveFingers) {
   const CliResult r = run_cli("run " + c + " -o " + dir + "/out");
   ASSERT_EQ(r.exit_code, 2) << r.out;  // built, and failed its check
   const json report = json::parse(read_all(dir + "/out/report.json"));
-  EXPECT_LT(figure(report, "fidelity_relative_hand"), 0.015);  // 13.2 % with the palm plane
+  EXPECT_LT(figure(report, "fidelity_relative_hand"), 0.008);  // 13.2 % with the palm plane, 1.21 % unhalved
   EXPECT_LT(std::abs(figure(report, "volume_difference_region_0")), 0.005);  // -4.8 % with it
   EXPECT_NE(r.out.find("lobes of the outer loop: 5, each an arm of the domain"), std::string::npos) << r.out;
 }

@@ -56,7 +56,11 @@ TEST(PropellerStages, ThinSidesCutAndBlocks) {
   // (decomposition.max_aspect): 38.
   EXPECT_EQ(d.layout.rectangles.size(), 38u);
   const auto v = igaprep::pipeline::param_stage(c, s, d, quiet);
-  EXPECT_EQ(v.blocks.size(), 260u);
+  // 260 blocks on those 38; their sides miss T1 by 0.55 % of the diagonal,
+  // so the rectangles under the faces nearest the missed parts are halved
+  // (decomposition.cover_rounds; 2026-12-07).
+  EXPECT_GT(v.rectangles, 38);
+  EXPECT_EQ(v.blocks.size(), 524u);
   // The hub is crossed by M at mid-height and its streamlines fan out: the
   // faces over it are spread (shell_spread.h). The blocks' signed volume
   // (folded cells counting negative) against the tet mesh's 1,759 mm^3:

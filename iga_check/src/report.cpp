@@ -90,7 +90,8 @@ ordered_json pipeline_json(const PipelineSection& p) {
                        {"l2_rate", num(v.l2_rate)},
                        {"energy_rate", num(v.energy_rate)},
                        {"required_rate", num(v.required_rate)},
-                       {"met", v.met}};
+                       {"met", v.met},
+                       {"first_l2_rate", v.first_l2_rate < 0.0 ? ordered_json(nullptr) : ordered_json(num(v.first_l2_rate))}};
   } else {
     j["validation"] = nullptr;
   }
@@ -262,6 +263,9 @@ std::string pipeline_html(const PipelineSection& p) {
         << esc(v.solver) << ". L2 rate <b>" << fmt(v.l2_rate) << "</b> (required &ge; " << fmt(v.required_rate)
         << "; optimal " << v.degree + 1 << "), energy rate " << fmt(v.energy_rate) << ": <span class=\""
         << (v.met ? "pass\">met" : "fail\">NOT met") << "</span></p>\n";
+      if (v.first_l2_rate >= 0.0)
+        h << "<p>At the case's levels the L2 rate was " << fmt(v.first_l2_rate)
+          << ", below the rate asked: the study was made once more a level finer (the table).</p>\n";
       h << "<table>\n<tr><th>refine</th><th>elements</th><th>unknowns</th><th>h</th><th>L2 error</th><th>relative "
            "L2 error</th><th>relative energy error</th><th>seconds</th></tr>\n";
       for (const auto& l : v.levels)

@@ -218,6 +218,7 @@ CaseValidation read_validation(const json& v, const std::string& file) {
   c.fine_refine = r.integer("fine_refine", c.fine_refine, 1, 8);
   c.patches = r.integer("patches", c.patches, 0, 1000000);
   c.solver = read_solver(r, c.solver);
+  c.finer_when_missed = r.boolean("finer_when_missed", c.finer_when_missed);
   r.refuse_unknown();
   if (c.fine_refine <= c.coarse_refine) r.fail("'validation.fine_refine' must be greater than 'validation.coarse_refine'");
   return c;

@@ -37,7 +37,8 @@ json surfaces_json(const Case& c, const std::string& relative_to) {
 
 json validation_json(const CaseValidation& v) {
   return {{"enabled", v.enabled}, {"coarse_refine", v.coarse_refine}, {"fine_refine", v.fine_refine},
-          {"patches", v.patches}, {"solver", iga_check::linear_solver_name(v.solver)}};
+          {"patches", v.patches}, {"solver", iga_check::linear_solver_name(v.solver)},
+          {"finer_when_missed", v.finer_when_missed}};
 }
 
 json check_json(const iga_check::CheckOptions& o) {
@@ -158,7 +159,7 @@ void add_stage_options(const Case& c, json& root) {
 bool validation_is_default(const CaseValidation& v) {
   const CaseValidation d;
   return v.enabled == d.enabled && v.coarse_refine == d.coarse_refine && v.fine_refine == d.fine_refine &&
-         v.patches == d.patches && v.solver == d.solver;
+         v.patches == d.patches && v.solver == d.solver && v.finer_when_missed == d.finer_when_missed;
 }
 
 }  // namespace

@@ -40,6 +40,33 @@ int min_degree(const spline::MultiPatch& mp) {
   return mp.patches.empty() ? 0 : p;
 }
 
+// A study that misses its rate is made once more a level finer when the
+// finer level stays within this many unknowns (at most 8 times the fine
+// level's): on distorted patches the coarse level can lie before the
+// asymptotic range. The kitten's 4 patches: L2 rate 3.36 at refine 0/1,
+// 4.31 at 1/2 (193,125 unknowns, 139 s, 12.3 GB with CHOLMOD).
+constexpr long long kFinerStudyUnknowns = 250000;
+
+// The study's levels and rates into v.
+void take_study(const iga_check::ManufacturedStudy& st, iga_check::PipelineValidation& v) {
+  v.ran = true;
+  v.levels.clear();
+  for (const auto& l : st.levels) {
+    v.levels.push_back({l.refine, l.elements, l.unknowns, l.h, l.l2_error, l.l2_relative, l.energy_relative,
+                        l.seconds});
+    v.solver = l.solver;
+  }
+  v.l2_rate = st.l2_rate;
+  v.energy_rate = st.energy_rate;
+  v.met = v.l2_rate >= v.required_rate;
+}
+
+// Whether the study that just missed is worth making a level finer.
+bool finer_study_fits(const iga_check::PipelineValidation& v, const CaseValidation& options) {
+  return options.finer_when_missed && v.ran && !v.met && !v.levels.empty() && options.fine_refine < 8 &&
+         8 * v.levels.back().unknowns <= kFinerStudyUnknowns;
+}
+
 }  // namespace
 
 iga_check::PipelineValidation validation_stage(const spline::MultiPatch& mp, const iga_check::CheckReport& check,
@@ -69,16 +96,14 @@ iga_check::PipelineValidation validation_stage(const spline::MultiPatch& mp, con
     try {
       // Also for the whole model: collapsed sides then get the cut label.
       const spline::MultiPatch sub = spline::submodel(mp, v.patch_list, kValidationCutLabel);
-      const iga_check::ManufacturedStudy st = iga_check::manufactured_study(sub, mo);
-      v.ran = true;
-      for (const auto& l : st.levels) {
-        v.levels.push_back({l.refine, l.elements, l.unknowns, l.h, l.l2_error, l.l2_relative, l.energy_relative,
-                            l.seconds});
-        v.solver = l.solver;
+      take_study(iga_check::manufactured_study(sub, mo), v);
+      if (finer_study_fits(v, options)) {
+        const double first = v.l2_rate;
+        ++mo.coarse_refine;
+        ++mo.fine_refine;
+        take_study(iga_check::manufactured_study(sub, mo), v);
+        v.first_l2_rate = first;
       }
-      v.l2_rate = st.l2_rate;
-      v.energy_rate = st.energy_rate;
-      v.met = v.l2_rate >= v.required_rate;
     } catch (const Error& e) {
       if (e.kind() == ErrorKind::Internal) throw;
       v.message = e.what();
@@ -93,6 +118,10 @@ iga_check::PipelineValidation validation_stage(const spline::MultiPatch& mp, con
                             v.patches, v.model_patches, v.degree, v.solver.c_str(), c.refine, f.refine, c.unknowns,
                             f.unknowns, c.l2_error, f.l2_error, c.l2_relative, f.l2_relative, v.l2_rate,
                             v.met ? ">=" : "<", v.required_rate, v.met ? "met" : "NOT MET", v.energy_rate);
+    if (v.first_l2_rate >= 0.0)
+      summary.details.push_back(text("at refine %d/%d the L2 rate was %.2f, below %.1f: measured again a level finer "
+                                     "('validation.finer_when_missed')",
+                                     c.refine - 1, f.refine - 1, v.first_l2_rate, v.required_rate));
   } else {
     summary.headline = "NOT RUN: " + v.message;
   }

@@ -65,6 +65,10 @@ struct PipelineValidation {
   double l2_rate = 0.0, energy_rate = 0.0;
   double required_rate = 0.0;  // degree + 0.5
   bool met = false;            // ran and l2_rate >= required_rate
+  // When the rate missed at the case's levels and the study was made once
+  // more a level finer (`levels` and the rates are then the finer ones):
+  // the L2 rate at the case's levels; < 0: not made.
+  double first_l2_rate = -1.0;
 };
 
 struct PipelineSection {

@@ -51,6 +51,9 @@ struct CaseValidation {
   int fine_refine = 1;
   int patches = 4;
   iga_check::LinearSolver solver = iga_check::LinearSolver::Cholesky;  // CHOLMOD when present
+  // A rate that misses at coarse/fine is measured once more a level finer
+  // (validation.h, kFinerStudyUnknowns).
+  bool finer_when_missed = true;
 };
 
 // Section "fit", keys max_elements and max_model_elements: when the check

@@ -73,6 +73,7 @@ bool has_type(const json& v, const std::string& type) {
   if (type == "array") return v.is_array();
   if (type == "object") return v.is_object();
   if (type == "object or null") return v.is_object() || v.is_null();
+  if (type == "number or null") return v.is_number() || v.is_null();
   ADD_FAILURE() << "unknown documented type " << type;
   return false;
 }

@@ -316,7 +316,7 @@ TEST(PipelineModels, ForceAndRotationLoadsReachTheSolve) {
 // spreading them, which would take it to 1.3 %).
 TEST(PipelineModels, AModelOffItsSurfacesFailsTheRunNamingTheFigures) {
   const auto c = model_case("sphere2", R"({"fit": {"elements": 1, "jacobian_target": 0},
-      "decomposition": {"spread_deviation": 0}, "validation": {"enabled": false}})", "sphere2_coarse");
+      "decomposition": {"spread_deviation": 0, "cover_rounds": 0}, "validation": {"enabled": false}})", "sphere2_coarse");
   igaprep::pipeline::Observer quiet;
   const RunResult r = igaprep::pipeline::run(c, quiet, {"", false});
   EXPECT_FALSE(r.report.passed);

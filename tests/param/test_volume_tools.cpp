@@ -989,8 +989,8 @@ TEST(BaseLayout, OneHoleDomain) {
   }
 }
 
-TEST(BaseLayout, FromAnInsetSheet) {
-  // The whole chain on a synthetic sheet: inset, then layout.
+// The layout of a 4 x 3 sheet with the hole [1.5, 2.5] x [1, 2], inset by 0.25.
+BaseLayout one_hole_sheet_layout() {
   const Eigen::Vector4d hole(1.5, 1.0, 2.5, 2.0);
   const mesh::TriMesh sheet = grid_sheet(4.0, 3.0, 0.25, {hole});
   Polycube2D pc;
@@ -999,7 +999,12 @@ TEST(BaseLayout, FromAnInsetSheet) {
   pc.domain.holes = {hole};
   pc.domain.hole_loop = {1};
   pc.uv = sheet.V.leftCols(2);
-  const BaseLayout L = base_layout(inset_base_surface(sheet, pc, 0.25, 20));
+  return base_layout(inset_base_surface(sheet, pc, 0.25, 20));
+}
+
+TEST(BaseLayout, FromAnInsetSheet) {
+  // The whole chain on a synthetic sheet: inset, then layout.
+  const BaseLayout L = one_hole_sheet_layout();
   EXPECT_EQ(L.rectangles.size(), 8u);
   EXPECT_EQ(L.crests.size(), 16u);
   // Every crest segment is covered by boundary edges of the sheet: its
@@ -1020,15 +1025,7 @@ TEST(BaseLayout, FromAnInsetSheet) {
 // A lid's rectangle is halved in the direction asked, a crest face's along
 // its segment only; the layout cut by the lines has the halves.
 TEST(BaseLayout, LinesHalvingFacesCutTheirRectangles) {
-  const Eigen::Vector4d hole(1.5, 1.0, 2.5, 2.0);
-  const mesh::TriMesh sheet = grid_sheet(4.0, 3.0, 0.25, {hole});
-  Polycube2D pc;
-  pc.domain.width = 4.0;
-  pc.domain.height = 3.0;
-  pc.domain.holes = {hole};
-  pc.domain.hole_loop = {1};
-  pc.uv = sheet.V.leftCols(2);
-  const BaseLayout L = base_layout(inset_base_surface(sheet, pc, 0.25, 20));
+  const BaseLayout L = one_hole_sheet_layout();
   ASSERT_EQ(L.rectangles.size(), 8u);
   // Rectangle 0 is the bottom left one; its bottom side (0) lies on M's boundary.
   const auto horizontal = std::find_if(L.crests.begin(), L.crests.end(),

@@ -17,6 +17,7 @@
 #include "number_args.h"
 #include "igaprep/core/atomic_file.h"
 #include "igaprep/core/input_files.h"
+#include "igaprep/core/text.h"
 #include "igaprep/core/error.h"
 #include "igaprep/export/hdf5_extraction.h"
 #include "igaprep/export/hdf5_model.h"
@@ -137,8 +138,12 @@ int run_solve(const SolveArgs& a) {
 
   std::printf("solve: %lld unknowns (%lld fixed), %lld non-zeros, %lld elements, %lld quadrature points\n",
               r.unknowns, r.fixed_dofs, r.nonzeros, r.elements, r.quadrature_points);
-  std::printf("solve: assembly %.3f s, solve %.3f s (%s%s)\n", r.assembly_seconds, r.solve_seconds, r.solver.c_str(),
-              r.cg_iterations > 0 ? (", " + std::to_string(r.cg_iterations) + " iterations").c_str() : "");
+  std::string how = r.solver;
+  if (r.cg_iterations > 0) how += ", " + std::to_string(r.cg_iterations) + " iterations";
+  if (r.factor_entries > 0.0)
+    how += text(r.solver == "cholmod" ? ", factor of %.3g entries" : "; CHOLMOD's factor would hold %.3g entries",
+                r.factor_entries);
+  std::printf("solve: assembly %.3f s, solve %.3f s (%s)\n", r.assembly_seconds, r.solve_seconds, how.c_str());
   std::printf("solve: strain energy %.10g, max displacement %.10g\n", r.strain_energy, r.max_displacement);
   std::printf("solve: wrote %s\n", a.output.c_str());
   return 0;
@@ -167,7 +172,7 @@ void add_solve_command(CLI::App& app) {
   sub->add_option("--max-unknowns", args->max_unknowns,
                   "Refuse a refined model with more unknowns than this (estimated first; default 1000000)")
       ->check(positive_number());
-  sub->add_option("--solver", args->solver, "Linear solver: auto (cholesky up to 200,000 unknowns, amg above), cholesky (CHOLMOD when present), cg (incomplete Cholesky) or amg (BoomerAMG)");
+  sub->add_option("--solver", args->solver, "Linear solver: auto (cholesky up to 200,000 unknowns and a factor of 2 GiB, amg above), cholesky (CHOLMOD when present), cg (incomplete Cholesky) or amg (BoomerAMG)");
   set_body(sub, [args] { return run_solve(*args); });
 }
 

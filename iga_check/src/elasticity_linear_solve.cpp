@@ -15,28 +15,39 @@ namespace igaprep::iga_check::detail {
 
 namespace {
 
+// CHOLMOD stores a double per entry of its factor (and far fewer indices).
+constexpr double kBytesPerFactorEntry = 8.0;
+
 const char* const kSingular =
     "the stiffness matrix is not positive definite: the constraints leave a mechanism free "
     "(e.g. patches that are not connected through interfaces and not fixed) ";
 
-Eigen::VectorXd solve_cholesky(const SparseMatrix& K, const Eigen::VectorXd& F, ElasticityReport& report) {
 #ifdef IGAPREP_HAVE_CHOLMOD
-  Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> chol;
+using Cholmod = Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>;
+
+// The factorization after chol's symbolic analysis of K (its ordering).
+Eigen::VectorXd factorize_and_solve(Cholmod& chol, const SparseMatrix& K, const Eigen::VectorXd& F,
+                                    ElasticityReport& report) {
   report.solver = "cholmod";
-#else
-  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> chol;
-  report.solver = "simplicial-ldlt";
-#endif
-  chol.compute(K);
+  chol.factorize(K);
   if (chol.info() != Eigen::Success) throw bad_input(std::string(kSingular) + "(Cholesky factorization failed)");
-#ifndef IGAPREP_HAVE_CHOLMOD
-  if (chol.vectorD().minCoeff() <= 1e-14 * chol.vectorD().cwiseAbs().maxCoeff())
-    throw bad_input(std::string(kSingular) + "(zero or negative pivot)");
-#endif
   Eigen::VectorXd u = chol.solve(F);
   if (chol.info() != Eigen::Success || !u.allFinite()) throw bad_input(std::string(kSingular) + "(the solve failed)");
   return u;
 }
+#else
+Eigen::VectorXd solve_ldlt(const SparseMatrix& K, const Eigen::VectorXd& F, ElasticityReport& report) {
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> chol;
+  report.solver = "simplicial-ldlt";
+  chol.compute(K);
+  if (chol.info() != Eigen::Success) throw bad_input(std::string(kSingular) + "(Cholesky factorization failed)");
+  if (chol.vectorD().minCoeff() <= 1e-14 * chol.vectorD().cwiseAbs().maxCoeff())
+    throw bad_input(std::string(kSingular) + "(zero or negative pivot)");
+  Eigen::VectorXd u = chol.solve(F);
+  if (chol.info() != Eigen::Success || !u.allFinite()) throw bad_input(std::string(kSingular) + "(the solve failed)");
+  return u;
+}
+#endif
 
 Eigen::VectorXd solve_cg(const SparseMatrix& K, const Eigen::VectorXd& F, const ElasticityOptions& options,
                          ElasticityReport& report) {
@@ -90,9 +101,22 @@ Eigen::VectorXd solve_linear_system(const SparseMatrix& K, const Eigen::VectorXd
                                     const ElasticityOptions& options, ElasticityReport& report) {
   if (F.size() == 0) return Eigen::VectorXd::Zero(0);
   LinearSolver solver = options.solver;
-  if (solver == LinearSolver::Automatic)
-    solver = F.size() > options.direct_max_unknowns ? LinearSolver::Amg : LinearSolver::Cholesky;
-  if (solver == LinearSolver::Cholesky) return solve_cholesky(K, F, report);
+  if (solver == LinearSolver::Automatic && F.size() > options.direct_max_unknowns) solver = LinearSolver::Amg;
+  if (solver == LinearSolver::Automatic || solver == LinearSolver::Cholesky) {
+#ifdef IGAPREP_HAVE_CHOLMOD
+    // The symbolic analysis predicts the factor's size before any of it is
+    // stored; the factorization reuses it.
+    Cholmod chol;
+    chol.analyzePattern(K);
+    if (chol.info() != Eigen::Success) throw bad_input(std::string(kSingular) + "(the Cholesky analysis failed)");
+    report.factor_entries = chol.cholmod().lnz;
+    if (solver == LinearSolver::Cholesky || kBytesPerFactorEntry * report.factor_entries <= options.direct_max_factor_bytes)
+      return factorize_and_solve(chol, K, F, report);
+    solver = LinearSolver::Amg;
+#else
+    return solve_ldlt(K, F, report);
+#endif
+  }
   if (solver == LinearSolver::Amg)
     return solve_amg(K, F, layout, options.cg_tolerance, options.cg_max_iterations, report);
   return solve_cg(K, F, options, report);

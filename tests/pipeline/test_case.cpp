@@ -199,9 +199,9 @@ TEST(Case, ValuesAreReadAndPathsResolved) {
   const Case named = parse_case(sphere2_case(R"(, "decomposition": {"spread_deviation": "auto"})"),
                                 models_dir() + "/sphere2", "case.json");
   EXPECT_TRUE(named.auto_spread_deviation);
-  // Defaults: the study's direct solver, the load case's choice by size.
+  // Defaults: the study and the load case choose by size.
   const Case d = parse_case(sphere2_case(R"(, "load_case": {"fix": "outer"})"), models_dir() + "/sphere2", "case.json");
-  EXPECT_EQ(d.validation.solver, igaprep::iga_check::LinearSolver::Cholesky);
+  EXPECT_EQ(d.validation.solver, igaprep::iga_check::LinearSolver::Automatic);
   EXPECT_EQ(d.load_case->solver, igaprep::iga_check::LinearSolver::Automatic);
 }
 

@@ -108,16 +108,30 @@ TEST(SolveCylinder, BoomerAmgAgreesWithCholesky) {
   EXPECT_NEAR(amg.report.strain_energy, work, 1e-4 * work);
 }
 
-// Automatic: the direct solver up to direct_max_unknowns, AMG above.
+// Automatic: the direct solver up to direct_max_unknowns and a factor of
+// direct_max_factor_bytes (predicted by CHOLMOD's analysis), AMG above.
 TEST(SolveCylinder, AutomaticChoiceBySize) {
   iga_check::ElasticityOptions options;
   options.refine = 1;
   const auto small = iga_check::solve_elasticity(composite_cylinder(3, 1), cylinder_problem(), options);
-  EXPECT_NE(small.report.solver, "boomeramg-pcg");
+  EXPECT_EQ(small.report.solver, "cholmod");
+  // The factor holds at least K's lower triangle and at most a dense one.
+  const double n = static_cast<double>(small.report.unknowns);
+  EXPECT_GE(small.report.factor_entries, static_cast<double>(small.report.nonzeros));
+  EXPECT_LE(small.report.factor_entries, n * (n + 1) / 2);
   options.direct_max_unknowns = small.report.unknowns - 1;
   const auto large = iga_check::solve_elasticity(composite_cylinder(3, 1), cylinder_problem(), options);
   EXPECT_EQ(large.report.solver, "boomeramg-pcg");
   EXPECT_NEAR(large.report.strain_energy, small.report.strain_energy, 1e-8 * small.report.strain_energy);
+
+  options.direct_max_unknowns = small.report.unknowns;
+  options.direct_max_factor_bytes = 8.0 * small.report.factor_entries;
+  EXPECT_EQ(iga_check::solve_elasticity(composite_cylinder(3, 1), cylinder_problem(), options).report.solver, "cholmod");
+  options.direct_max_factor_bytes = 8.0 * small.report.factor_entries - 1.0;
+  const auto wide = iga_check::solve_elasticity(composite_cylinder(3, 1), cylinder_problem(), options);
+  EXPECT_EQ(wide.report.solver, "boomeramg-pcg");
+  EXPECT_EQ(wide.report.factor_entries, small.report.factor_entries);
+  EXPECT_NEAR(wide.report.strain_energy, small.report.strain_energy, 1e-8 * small.report.strain_energy);
 }
 
 // An iteration limit too small for the tolerance is an error naming the

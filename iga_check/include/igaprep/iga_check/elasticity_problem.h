@@ -79,8 +79,10 @@ struct ElasticityProblem {
   std::function<Eigen::Vector3d(const Eigen::Vector3d&)> body_force_function;
 };
 
-// Automatic: Cholesky up to ElasticityOptions::direct_max_unknowns, Amg
-// above (docs/elasticity-solver.md, "Large problems").
+// Automatic: Cholesky while its factor (predicted by CHOLMOD's symbolic
+// analysis) fits ElasticityOptions::direct_max_factor_bytes and the
+// unknowns direct_max_unknowns, Amg otherwise (docs/elasticity-solver.md,
+// "Large problems").
 enum class LinearSolver { Automatic, Cholesky, ConjugateGradient, Amg };
 // "auto", "cholesky", "cg" or "amg"; throws bad_input naming the choices.
 LinearSolver linear_solver_named(const std::string& name);
@@ -93,6 +95,9 @@ struct ElasticityOptions {
   int extra_quadrature = 0;
   LinearSolver solver = LinearSolver::Automatic;
   long long direct_max_unknowns = 200'000;  // LinearSolver::Automatic's switch to Amg (docs)
+  // Automatic's other switch: the factor's values, 8 bytes an entry
+  // (docs/elasticity-solver.md, "Large problems").
+  double direct_max_factor_bytes = 2.0 * 1024 * 1024 * 1024;
   double cg_tolerance = 1e-8;   // relative residual for ConjugateGradient and Amg
   int cg_max_iterations = 0;    // 0: 10 * unknowns (ConjugateGradient), 1,000 (Amg)
   // Refused before any work when the refined model would have more scalar
@@ -117,6 +122,7 @@ struct ElasticityReport {
   int cg_iterations = 0;
   double cg_residual = 0.0;
   std::string solver;            // the linear solver actually used
+  double factor_entries = 0.0;   // entries of CHOLMOD's factor, predicted by its analysis (0: not analysed)
 };
 
 }  // namespace igaprep::iga_check

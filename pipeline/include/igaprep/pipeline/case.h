@@ -50,7 +50,7 @@ struct CaseValidation {
   int coarse_refine = 0;
   int fine_refine = 1;
   int patches = 4;
-  iga_check::LinearSolver solver = iga_check::LinearSolver::Cholesky;  // CHOLMOD when present
+  iga_check::LinearSolver solver = iga_check::LinearSolver::Automatic;  // CHOLMOD while its factor is small, else AMG
   // A rate that misses at coarse/fine is measured once more a level finer
   // (validation.h, kFinerStudyUnknowns).
   bool finer_when_missed = true;
@@ -101,7 +101,7 @@ struct CaseLoadCase {
   Eigen::Vector3d body_force = Eigen::Vector3d::Zero();
   std::optional<iga_check::RotationLoad> rotation;
   int refine = 0;
-  iga_check::LinearSolver solver = iga_check::LinearSolver::Automatic;  // Cholesky, or AMG above 200,000 unknowns
+  iga_check::LinearSolver solver = iga_check::LinearSolver::Automatic;  // CHOLMOD while its factor is small, else AMG
 };
 
 struct Case {

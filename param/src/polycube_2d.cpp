@@ -523,6 +523,11 @@ namespace {
 
 bool horizontal(DomainSide side) { return side == DomainSide::Bottom || side == DomainSide::Top; }
 
+// Box sides closer than this share of the domain's short side are merged
+// (merge_close_sides): far below the 4 % gap kept between holes and the
+// third of an arm's width kept between arms on a side.
+constexpr double kCloseSides = 0.01;
+
 // Number of loop edges from position a forward to position b.
 int edges_between(std::size_t n, int a, int b) { return (b - a + static_cast<int>(n)) % static_cast<int>(n); }
 
@@ -604,7 +609,11 @@ RectilinearDomain rectilinear_domain(const mesh::TriMesh& m, const std::vector<P
   dom.height = WH(1);
   if (loops.size() > 1) grow_to_fit_holes(m, loops, sizes, dom);
   dom.arms = domain_arms(m, loops[outer], dom);
-  if (loops.size() == 1) return dom;
+  const double close = kCloseSides * std::min(dom.width, dom.height);
+  if (loops.size() == 1) {
+    merge_close_sides(dom, close);
+    return dom;
+  }
 
   // Harmonic map with the outer loop on the rectangle and the holes free.
   RectilinearDomain outer_only = dom;
@@ -681,7 +690,9 @@ RectilinearDomain rectilinear_domain(const mesh::TriMesh& m, const std::vector<P
       for (std::size_t g : group) aligned[g](k) = mean;
     }
   dom.holes = valid(aligned) ? aligned : holes;
-  return dom;
+  RectilinearDomain merged = dom;
+  merge_close_sides(merged, close);
+  return valid(merged.holes) ? merged : dom;
 }
 
 namespace {

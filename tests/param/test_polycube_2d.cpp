@@ -180,6 +180,37 @@ TEST(DomainRectangles, ExtraLinesCutTheWholeGrid) {
   EXPECT_EQ(domain_rectangles(d, 0.0, GridLines{{0.0, 1e-9}, {}}).size(), 8u);
 }
 
+// Sides of different boxes within the tolerance across the domain move onto
+// their mean (a bottom arm's right side and a top arm's left side; two
+// bottom arms' outer ends), onto the outer rectangle's side when that is
+// one of them, and two sides of one box stay apart: the grid then has no
+// sliver column between the arms.
+TEST(MergeCloseSides, NearlyCoincidentSidesOfDifferentBoxesBecomeOne) {
+  RectilinearDomain d;
+  d.width = 10.0;
+  d.height = 4.0;
+  d.arms = {DomainArm{DomainSide::Bottom, 2.0, 3.0, 1.0}, DomainArm{DomainSide::Bottom, 5.0, 6.0, 1.01},
+            arm_from_box(DomainSide::Top, Eigen::Vector4d(3.02, 4.0, 4.0, 5.0), 10.0, 4.0)};
+  d.holes = {Eigen::Vector4d(7.0, 1.0, 7.01, 2.0), Eigen::Vector4d(8.5, 2.0, 9.0, 3.97)};
+  auto narrowest_column = [](const std::vector<Eigen::Vector4d>& rects) {
+    double w = 1e9;
+    for (const auto& r : rects)
+      if (r(0) < 6.0) w = std::min(w, r(2) - r(0));
+    return w;
+  };
+  EXPECT_NEAR(narrowest_column(domain_rectangles(d)), 0.02, 1e-12);
+  merge_close_sides(d, 0.05);
+  EXPECT_DOUBLE_EQ(arm_box(d, d.arms[0])(2), 3.01);
+  EXPECT_DOUBLE_EQ(arm_box(d, d.arms[2])(0), 3.01);
+  EXPECT_DOUBLE_EQ(d.arms[0].length, 1.005);
+  EXPECT_DOUBLE_EQ(d.arms[1].length, 1.005);
+  EXPECT_DOUBLE_EQ(d.arms[0].from, 2.0);
+  EXPECT_DOUBLE_EQ(d.arms[2].length, 1.0);
+  EXPECT_EQ(d.holes[0], Eigen::Vector4d(7.0, 1.0, 7.01, 2.0));
+  EXPECT_EQ(d.holes[1], Eigen::Vector4d(8.5, 2.0, 9.0, 4.0));
+  EXPECT_NEAR(narrowest_column(domain_rectangles(d)), 0.99, 1e-12);  // [2, 3.01]
+}
+
 // Four unit right triangles in 3D (area 0.5 each); the squeezed share is
 // the area under a tenth of the area-weighted median Jacobian.
 TEST(SqueezedShare, CountsTheAreaUnderATenthOfTheMedianScale) {

@@ -127,8 +127,17 @@ std::vector<Eigen::Vector2d> side_walk(const RectilinearDomain& domain, DomainSi
 // sheet with the outer loop fixed on the rectangle and the holes free puts its
 // loop; holes are shrunk together until they keep a gap of 4 % of min(W, H)
 // from each other and the outside, and hole sides within 5 % of min(W, H) of
-// each other are aligned (fewer, better rectangles).
+// each other are aligned (fewer, better rectangles); then any box sides
+// within 1 % of min(W, H) of each other are merged (merge_close_sides).
 RectilinearDomain rectilinear_domain(const mesh::TriMesh& sheet, const std::vector<PolycubeLoop>& loops);
+
+// Sides of the domain's holes and arms that lie within `tolerance` of each
+// other across the domain move onto one line (their mean, or the outer
+// rectangle's side when that is one of them): the grid of all sides
+// (domain_rectangles) would otherwise cut a sliver of rectangles between
+// them, whose blocks fold (the hand: two fingers' sides 0.0008 apart in a
+// domain 0.9 wide). Two sides of one box are never merged.
+void merge_close_sides(RectilinearDomain& domain, double tolerance);
 
 struct BoundarySegment {
   int loop = 0;

@@ -107,11 +107,16 @@ Fit fit_stage(const Case& c, const Surfaces& surfaces, const Decomposition& d, c
     StageTimer jt;
     out.jacobians = raise_jacobians(c, d, vp, mp, observer);
     const auto& r = out.jacobians;
+    const std::string focus =
+        r.focus_patches == 0 ? ""
+                             : text(", %d in a last pass aimed at negative samples (their lowest %.3f -> %.3f%s)",
+                                    r.focus_patches, r.focus_min_before, r.focus_min_after,
+                                    r.focus_kept ? "" : ", not kept");
     s.details.push_back(text("Jacobians %.2f s: lowest sampled scaled Jacobian %.3f -> %.3f, points below %.2f: %d -> "
-                             "%d (%d control points moved, at most %.2g, %d patches on dense samples; joint: %d points, "
+                             "%d (%d control points moved, at most %.2g, %d patches on dense samples%s; joint: %d points, "
                              "%d iterations, stopped: %s; %d sweeps, stopped: %s)",
                              jt.seconds(), r.min_before, r.min_after, c.jacobian.target, r.below_before,
-                             r.below_after, r.moved_points, r.max_move, r.dense_patches, r.joint_variables,
+                             r.below_after, r.moved_points, r.max_move, r.dense_patches, focus.c_str(), r.joint_variables,
                              r.joint_iterations, r.joint_stop.empty() ? "off" : r.joint_stop.c_str(), r.sweeps,
                              r.stop_reason.c_str()));
   };

@@ -282,7 +282,7 @@ JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& sli
   // next to samples below the target has not fallen to a new low for
   // kStallSweeps sweeps (the folds left are held by points that cannot
   // move them, and further moves only cost fidelity), or options.sweeps.
-  auto sweeps = [&](Optimizer& opt) {
+  auto sweeps = [&](Optimizer& opt, double target) {
     long long fewest_active = std::numeric_limits<long long>::max();
     int since_fewest = 0;
     out.stop_reason = "the sweep limit";
@@ -291,7 +291,7 @@ JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& sli
         options.progress("Jacobian repair (sweeps)", static_cast<std::size_t>(sweep), static_cast<std::size_t>(options.sweeps));
       long long moves = 0;
       std::vector<char> active(static_cast<std::size_t>(num.count), 0);
-      opt.below_target(options.target, [&](int patch, int local) {
+      opt.below_target(target, [&](int patch, int local) {
         active[static_cast<std::size_t>(num.global[static_cast<std::size_t>(patch)][static_cast<std::size_t>(local)])] = 1;
       });
       const long long n_active = std::count(active.begin(), active.end(), 1);
@@ -309,7 +309,7 @@ JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& sli
       for (int g = 0; g < num.count; ++g) {
         const int con = cons[static_cast<std::size_t>(g)];
         if (con == kFixed || !active[static_cast<std::size_t>(g)]) continue;
-        if (opt.improve(copies[static_cast<std::size_t>(g)], con, slide, options.target)) {
+        if (opt.improve(copies[static_cast<std::size_t>(g)], con, slide, target)) {
           moved[static_cast<std::size_t>(g)] = 1;
           ++moves;
         }
@@ -323,22 +323,22 @@ JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& sli
     }
   };
   // The joint optimization first, then sweeps for what it left below the target.
-  auto repair = [&](const std::vector<int>& points) {
+  auto repair = [&](const std::vector<int>& points, double target) {
     if (options.iterations > 0) {
       const detail::JointRepairResult j =
-          detail::joint_repair(mp, num, copies, cons, slide, options.target, points, options.iterations, &moved,
+          detail::joint_repair(mp, num, copies, cons, slide, target, points, options.iterations, &moved,
                                options.progress);
       out.joint_variables += j.variables;
       out.joint_iterations += j.iterations;
       out.joint_stop = j.stop;
     }
     Optimizer opt(mp, points);
-    sweeps(opt);
+    sweeps(opt, target);
     opt.global(options.target, &out.min_after, &out.below_after);
   };
   std::vector<int> points(mp.patches.size(), options.points);
   Optimizer(mp, points).global(options.target, &out.min_before, &out.below_before);
-  repair(points);
+  repair(points, options.target);
   // A fold can open between the sample points where control points moved:
   // those patches are sampled twice as densely, and where that finds a point
   // well below the target they are repaired again on the dense samples.
@@ -354,7 +354,40 @@ JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& sli
       any_dense = true;
       ++out.dense_patches;
     }
-  if (any_dense) repair(points);
+  if (any_dense) repair(points, options.target);
+  // Samples still negative get a last pass aimed at them alone: with the
+  // target at 0 the many samples between 0 and the target no longer weigh
+  // against the moves that would open the folds.
+  // It is kept only if it raised their lowest sample.
+  if (out.min_after < 0.0) {
+    for (std::size_t pi = 0; pi < mp.patches.size(); ++pi)
+      if (patch_min_at(mp.patches[pi], dense) < 0.0) {
+        points[pi] = dense;
+        ++out.focus_patches;
+      }
+    if (out.focus_patches > 0) {
+      const JacobianOptimizationResult before_focus = out;
+      const std::vector<char> moved_before = moved;
+      std::vector<Eigen::MatrixXd> kept;
+      for (const Patch& p : mp.patches) kept.push_back(p.control_points);
+      double low_before = 0.0, low_after = 0.0;
+      int below = 0;
+      Optimizer(mp, points).global(0.0, &low_before, &below);
+      repair(points, 0.0);
+      Optimizer(mp, points).global(0.0, &low_after, &below);
+      out.focus_min_before = low_before;
+      out.focus_min_after = low_after;
+      if (!(low_after > low_before)) {
+        for (std::size_t pi = 0; pi < mp.patches.size(); ++pi) mp.patches[pi].control_points = kept[pi];
+        const int focused = out.focus_patches;
+        out = before_focus;
+        moved = moved_before;
+        out.focus_patches = focused;
+        out.focus_kept = false;
+        out.focus_min_before = out.focus_min_after = low_before;
+      }
+    }
+  }
   for (int g = 0; g < num.count; ++g) {
     if (!moved[static_cast<std::size_t>(g)]) continue;
     ++out.moved_points;

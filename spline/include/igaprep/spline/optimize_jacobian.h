@@ -16,7 +16,9 @@
 // stay conforming. Then every patch with a moved control point is sampled
 // twice as densely; where that finds a point more than 0.1 below the target
 // (a fold between the first samples), both steps run again with those
-// patches on the dense samples.
+// patches on the dense samples. Where dense samples are still negative, a
+// last pass aims at them alone (target 0), kept only if it raises their
+// lowest sample.
 #include <functional>
 #include <string>
 #include <utility>
@@ -55,6 +57,9 @@ struct JacobianOptimizationResult {
   int joint_variables = 0, joint_iterations = 0;  // the joint optimization's control points and iterations (both passes)
   std::string joint_stop;                    // why its last pass stopped
   int dense_patches = 0;                     // patches optimized again on twice as dense samples
+  int focus_patches = 0;                     // patches with negative dense samples after that, in the last pass (target 0)
+  bool focus_kept = true;                    // whether that pass raised their lowest sample (else it was undone)
+  double focus_min_before = 0.0, focus_min_after = 0.0;  // that lowest sample before the pass and as left
   double max_move = 0.0;                     // largest distance a control point moved
   // Why the last pass of sweeps stopped: "the target reached", "no control point can
   // move", "no progress in 10 sweeps" or "the sweep limit".

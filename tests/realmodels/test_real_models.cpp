@@ -104,8 +104,9 @@ TEST(RealModels, TheKittensCheckPassesWithDefaultKeys) {
 // elements from folded samples, and the wrist (2026-12-07: 1,014 negative
 // without the repair, fidelity 1.21 %, volume -0.17 %; with every key at
 // its default 197 negative, 1.207 %, -0.19 %, 293 s, before the halving;
-// the halving with the repair off: 2,660 negative of 181,008, fidelity
-// 0.540 %, volume -0.049 %, 139 s in CI).
+// with the halving, the close sides merged and the last repair pass: 25
+// negative of 170,640, fidelity 0.455 %, volume -0.044 %, 508 s, in
+// docs/validation.md).
 TEST(RealModels, TheHandsModelCoversItsFiveFingers) {
   const std::string obj = std::string(IGAPREP_SHARED_MODELS_DIR) + "/hand.obj";
   if (!std::filesystem::exists(obj)) GTEST_SKIP() << "shared model " << obj << " is absent";

@@ -357,37 +357,32 @@ JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& sli
   if (any_dense) repair(points, options.target);
   // Samples still negative get a last pass aimed at them alone: with the
   // target at 0 the many samples between 0 and the target no longer weigh
-  // against the moves that would open the folds.
-  // It is kept only if it raised their lowest sample.
-  if (out.min_after < 0.0) {
+  // against the moves that would open the folds. It is kept only if it
+  // raises their lowest sample.
+  auto aim_at_negative_samples = [&](std::vector<int> points) {
     for (std::size_t pi = 0; pi < mp.patches.size(); ++pi)
       if (patch_min_at(mp.patches[pi], dense) < 0.0) {
         points[pi] = dense;
         ++out.focus_patches;
       }
-    if (out.focus_patches > 0) {
-      const JacobianOptimizationResult before_focus = out;
-      const std::vector<char> moved_before = moved;
-      std::vector<Eigen::MatrixXd> kept;
-      for (const Patch& p : mp.patches) kept.push_back(p.control_points);
-      double low_before = 0.0, low_after = 0.0;
-      int below = 0;
-      Optimizer(mp, points).global(0.0, &low_before, &below);
-      repair(points, 0.0);
-      Optimizer(mp, points).global(0.0, &low_after, &below);
-      out.focus_min_before = low_before;
-      out.focus_min_after = low_after;
-      if (!(low_after > low_before)) {
-        for (std::size_t pi = 0; pi < mp.patches.size(); ++pi) mp.patches[pi].control_points = kept[pi];
-        const int focused = out.focus_patches;
-        out = before_focus;
-        moved = moved_before;
-        out.focus_patches = focused;
-        out.focus_kept = false;
-        out.focus_min_before = out.focus_min_after = low_before;
-      }
-    }
-  }
+    if (out.focus_patches == 0) return;
+    const JacobianOptimizationResult before = out;
+    const std::vector<char> moved_before = moved;
+    std::vector<Eigen::MatrixXd> kept;
+    for (const Patch& p : mp.patches) kept.push_back(p.control_points);
+    int below = 0;
+    Optimizer(mp, points).global(0.0, &out.focus_min_before, &below);
+    repair(points, 0.0);
+    Optimizer(mp, points).global(0.0, &out.focus_min_after, &below);
+    if (out.focus_min_after > out.focus_min_before) return;
+    for (std::size_t pi = 0; pi < mp.patches.size(); ++pi) mp.patches[pi].control_points = kept[pi];
+    const double lowest = out.focus_min_before;
+    out = before;
+    moved = moved_before;
+    out.focus_kept = false;
+    out.focus_min_before = out.focus_min_after = lowest;
+  };
+  if (out.min_after < 0.0) aim_at_negative_samples(points);
   for (int g = 0; g < num.count; ++g) {
     if (!moved[static_cast<std::size_t>(g)]) continue;
     ++out.moved_points;

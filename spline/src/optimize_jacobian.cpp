@@ -359,28 +359,32 @@ JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& sli
   // target at 0 the many samples between 0 and the target no longer weigh
   // against the moves that would open the folds. It is kept only if it
   // raises their lowest sample.
+  // The lowest sample over every patch is theirs: the others' samples are
+  // among their dense ones, all non-negative; after the pass it is the
+  // repair's own min_after on the same samples.
   auto aim_at_negative_samples = [&](std::vector<int> points) {
-    for (std::size_t pi = 0; pi < mp.patches.size(); ++pi)
-      if (patch_min_at(mp.patches[pi], dense) < 0.0) {
-        points[pi] = dense;
-        ++out.focus_patches;
-      }
+    double lowest_before = 0.0;
+    for (std::size_t pi = 0; pi < mp.patches.size(); ++pi) {
+      const double lowest = patch_min_at(mp.patches[pi], dense);
+      if (!(lowest < 0.0)) continue;
+      points[pi] = dense;
+      ++out.focus_patches;
+      lowest_before = std::min(lowest_before, lowest);
+    }
     if (out.focus_patches == 0) return;
     const JacobianOptimizationResult before = out;
     const std::vector<char> moved_before = moved;
     std::vector<Eigen::MatrixXd> kept;
     for (const Patch& p : mp.patches) kept.push_back(p.control_points);
-    int below = 0;
-    Optimizer(mp, points).global(0.0, &out.focus_min_before, &below);
     repair(points, 0.0);
-    Optimizer(mp, points).global(0.0, &out.focus_min_after, &below);
+    out.focus_min_before = lowest_before;
+    out.focus_min_after = out.min_after;
     if (out.focus_min_after > out.focus_min_before) return;
     for (std::size_t pi = 0; pi < mp.patches.size(); ++pi) mp.patches[pi].control_points = kept[pi];
-    const double lowest = out.focus_min_before;
     out = before;
     moved = moved_before;
     out.focus_kept = false;
-    out.focus_min_before = out.focus_min_after = lowest;
+    out.focus_min_before = out.focus_min_after = lowest_before;
   };
   if (out.min_after < 0.0) aim_at_negative_samples(points);
   for (int g = 0; g < num.count; ++g) {

@@ -216,11 +216,11 @@ class Penalty : public ceres::FirstOrderFunction {
 
 // Global control points next to a sample below `below` that may move.
 std::vector<char> movable_near_low_samples(const MultiPatch& mp, const GlobalNumbering& num, const std::vector<int>& cons,
-                                           const std::vector<int>& points, double below) {
+                                           const std::vector<SampleGrid>& grids, double below) {
   std::vector<char> out(static_cast<std::size_t>(num.count), 0);
   for (std::size_t pi = 0; pi < mp.patches.size(); ++pi) {
     const Patch& p = mp.patches[pi];
-    const GridBasis basis = grid_basis(p, repair_sample_grid(p, points[pi]), 1);
+    const GridBasis basis = grid_basis(p, grids[pi], 1);
     const GridEvaluation ev = evaluate_grid(p, basis);
     const int mu = basis.size(0), mv = basis.size(1);
     for (Eigen::Index at = 0; at < ev.jacobians.rows(); ++at) {
@@ -270,7 +270,7 @@ std::vector<Variable> make_variables(const MultiPatch& mp, const std::vector<std
 
 // The patches that hold a variable, each with the samples its variables reach.
 std::vector<PatchWork> make_work(const MultiPatch& mp, const std::vector<std::vector<Copy>>& copies,
-                                 const std::vector<Variable>& vars, const std::vector<int>& points) {
+                                 const std::vector<Variable>& vars, const std::vector<SampleGrid>& grids) {
   std::vector<int> work_of(mp.patches.size(), -1);
   std::vector<PatchWork> work;
   std::vector<std::array<std::array<double, 2>, 3>> range;  // per work: parameter box its variables reach
@@ -298,7 +298,7 @@ std::vector<PatchWork> make_work(const MultiPatch& mp, const std::vector<std::ve
   for (std::size_t pi = 0; pi < mp.patches.size(); ++pi) {
     const int w = work_of[pi];
     if (w < 0) continue;
-    std::array<std::vector<double>, 3> params = repair_sample_grid(mp.patches[pi], points[pi]);
+    SampleGrid params = grids[pi];
     for (int d = 0; d < 3; ++d) {
       const auto& r = range[static_cast<std::size_t>(w)][static_cast<std::size_t>(d)];
       auto& t = params[static_cast<std::size_t>(d)];
@@ -369,18 +369,18 @@ std::string stop_reason(const ceres::GradientProblemSolver::Summary& s, const St
 
 JointRepairResult joint_repair(MultiPatch& mp, const GlobalNumbering& num, const std::vector<std::vector<Copy>>& copies,
                                const std::vector<int>& cons,
-                               const SlideFn& slide, double target, const std::vector<int>& points, int iterations,
+                               const SlideFn& slide, double target, const std::vector<SampleGrid>& grids, int iterations,
                                std::vector<char>* moved, const ProgressCallback& progress) {
   JointRepairResult out;
   std::vector<Variable> vars =
-      make_variables(mp, copies, cons, movable_near_low_samples(mp, num, cons, points, std::min(1.0, target + kReach)), slide);
+      make_variables(mp, copies, cons, movable_near_low_samples(mp, num, cons, grids, std::min(1.0, target + kReach)), slide);
   if (vars.empty()) {
     out.stop = "no control point can move";
     return out;
   }
   out.variables = static_cast<int>(vars.size());
   const int dof = vars.back().offset + static_cast<int>(vars.back().T.cols());
-  std::vector<PatchWork> work = make_work(mp, copies, vars, points);
+  std::vector<PatchWork> work = make_work(mp, copies, vars, grids);
   auto* penalty = new Penalty(std::move(vars), std::move(work), slide, target, dof);
   ceres::GradientProblem problem(penalty);  // owns penalty
   std::vector<double> y(static_cast<std::size_t>(dof), 0.0);

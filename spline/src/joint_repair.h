@@ -21,8 +21,8 @@ struct JointRepairResult {
 };
 
 // Inputs: the model, its global numbering (global_numbering), its global
-// control points' copies and constraints (repair_common.h), `slide` for the surfaces, the target, sample points per
-// element and direction of each patch, and at most `iterations` L-BFGS
+// control points' copies and constraints (repair_common.h), `slide` for the surfaces, the target, each
+// patch's sample grid, and at most `iterations` L-BFGS
 // iterations. Control points whose support holds a sample below
 // target + 0.1 move: free ones in space, sliding ones along their surface
 // (in the tangent plane found through `slide`, then put back by it), fixed
@@ -30,7 +30,7 @@ struct JointRepairResult {
 // progress, if given, hears of each iteration.
 JointRepairResult joint_repair(MultiPatch& mp, const GlobalNumbering& num, const std::vector<std::vector<Copy>>& copies,
                                const std::vector<int>& cons, const SlideFn& slide, double target,
-                               const std::vector<int>& points, int iterations, std::vector<char>* moved,
+                               const std::vector<SampleGrid>& grids, int iterations, std::vector<char>* moved,
                                const ProgressCallback& progress = {});
 
 }  // namespace igaprep::spline::detail

@@ -22,6 +22,7 @@ namespace {
 using detail::Copy;
 using detail::kFixed;
 using detail::repair_scaled;
+using detail::SampleGrid;
 
 // One basis function's value and derivative at a sample point of one direction.
 struct Entry {
@@ -52,9 +53,8 @@ std::vector<Eigen::Matrix3d> grid_jacobians(const Patch& p, const std::array<std
   return J;
 }
 
-PatchSamples sample_patch(const Patch& p, int points) {
+PatchSamples sample_patch(const Patch& p, const SampleGrid& params) {
   PatchSamples s;
-  const std::array<std::vector<double>, 3> params = detail::repair_sample_grid(p, points);
   for (int d = 0; d < 3; ++d) {
     const int deg = p.degrees[static_cast<std::size_t>(d)];
     const BasisTable tab = basis_table(p.knots[static_cast<std::size_t>(d)], deg, params[static_cast<std::size_t>(d)], 1);
@@ -75,18 +75,18 @@ PatchSamples sample_patch(const Patch& p, int points) {
   return s;
 }
 
-// The lowest scaled Jacobian of a patch sampled with `points` per element and direction.
-double patch_min_at(const Patch& p, int points) {
+// The lowest scaled Jacobian of a patch on a sample grid.
+double patch_min_at(const Patch& p, const SampleGrid& params) {
   double lo = std::numeric_limits<double>::infinity();
-  for (const Eigen::Matrix3d& J : grid_jacobians(p, detail::repair_sample_grid(p, points))) lo = std::min(lo, repair_scaled(J));
+  for (const Eigen::Matrix3d& J : grid_jacobians(p, params)) lo = std::min(lo, repair_scaled(J));
   return lo;
 }
 
 class Optimizer {
  public:
-  // points[patch]: sample points per element and direction of that patch.
-  Optimizer(MultiPatch& mp, const std::vector<int>& points) : mp_(mp) {
-    for (std::size_t pi = 0; pi < mp.patches.size(); ++pi) samples_.push_back(sample_patch(mp.patches[pi], points[pi]));
+  // grids[patch]: that patch's sample grid.
+  Optimizer(MultiPatch& mp, const std::vector<SampleGrid>& grids) : mp_(mp) {
+    for (std::size_t pi = 0; pi < mp.patches.size(); ++pi) samples_.push_back(sample_patch(mp.patches[pi], grids[pi]));
   }
 
   // Calls f(J at the point after moving by delta) for every sample point in
@@ -254,147 +254,232 @@ class Optimizer {
   std::vector<Item> items_;
 };
 
-}  // namespace
-
 // Sweeps without a new low in the number of active control points before
 // the repair stops (docs/decomposition.md, the fit).
 constexpr int kStallSweeps = 10;
 
-JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& slide,
-                                              const std::vector<std::pair<int, Side>>& fixed_sides,
-                                              const JacobianOptimizationOptions& options) {
+void check_options(const MultiPatch& mp, const JacobianOptimizationOptions& options) {
   if (options.sweeps < 0 || options.iterations < 0 || options.points < 2 || !(options.target >= 0.0 && options.target <= 1.0))
     throw bad_input("optimize_jacobians: need sweeps >= 0, iterations >= 0, points >= 2 and a target in [0, 1]");
   for (const Patch& p : mp.patches)
     if (p.rational()) throw bad_input("optimize_jacobians: rational patches are not supported");
-  const GlobalNumbering num = global_numbering(mp);
-  const std::vector<std::vector<Copy>> copies = detail::control_point_copies(mp, num);
-  const std::vector<int> cons = detail::control_point_constraints(mp, num, fixed_sides, static_cast<bool>(slide));
+}
 
-  JacobianOptimizationResult out;
-  std::vector<Eigen::Vector3d> start(static_cast<std::size_t>(num.count));
-  for (int g = 0; g < num.count; ++g) {
-    const Copy& c0 = copies[static_cast<std::size_t>(g)].front();
-    start[static_cast<std::size_t>(g)] = mp.patches[static_cast<std::size_t>(c0.patch)].control_points.row(c0.local).transpose();
+// One repair of a model: its passes share the control points' numbering,
+// copies and constraints, and the record of which moved.
+class Repair {
+ public:
+  Repair(MultiPatch& mp, const SlideFn& slide, const std::vector<std::pair<int, Side>>& fixed_sides,
+         const JacobianOptimizationOptions& options)
+      : mp_(mp),
+        slide_(slide),
+        options_(options),
+        num_(global_numbering(mp)),
+        copies_(detail::control_point_copies(mp, num_)),
+        cons_(detail::control_point_constraints(mp, num_, fixed_sides, static_cast<bool>(slide))),
+        moved_(static_cast<std::size_t>(num_.count), 0) {
+    for (int g = 0; g < num_.count; ++g) start_.push_back(position(g));
   }
-  std::vector<char> moved(static_cast<std::size_t>(num.count), 0);
+
+  // Every patch's grid of `points` per element and direction.
+  std::vector<SampleGrid> grids(int points) const {
+    std::vector<SampleGrid> out;
+    for (const Patch& p : mp_.patches) out.push_back(detail::repair_sample_grid(p, points));
+    return out;
+  }
+
+  void measure_before(const std::vector<SampleGrid>& grids) {
+    Optimizer(mp_, grids).global(options_.target, &out_.min_before, &out_.below_before);
+  }
+
+  // The joint optimization first, then sweeps for what it left below the target.
+  void run(const std::vector<SampleGrid>& grids, double target) {
+    if (options_.iterations > 0) {
+      const detail::JointRepairResult j = detail::joint_repair(mp_, num_, copies_, cons_, slide_, target, grids,
+                                                               options_.iterations, &moved_, options_.progress);
+      out_.joint_variables += j.variables;
+      out_.joint_iterations += j.iterations;
+      out_.joint_stop = j.stop;
+    }
+    Optimizer opt(mp_, grids);
+    sweeps(opt, target);
+    opt.global(options_.target, &out_.min_after, &out_.below_after);
+  }
+
+  // A fold can open between the sample points where control points moved:
+  // those patches are sampled twice as densely, and where that finds a point
+  // well below the target they are repaired again on the dense samples.
+  void dense_pass(std::vector<SampleGrid>& grids) {
+    std::vector<char> touched(mp_.patches.size(), 0);
+    for (int g = 0; g < num_.count; ++g)
+      if (moved_[static_cast<std::size_t>(g)])
+        for (const Copy& c : copies_[static_cast<std::size_t>(g)]) touched[static_cast<std::size_t>(c.patch)] = 1;
+    bool any = false;
+    for (std::size_t pi = 0; pi < mp_.patches.size(); ++pi) {
+      if (!touched[pi]) continue;
+      SampleGrid dense = detail::repair_sample_grid(mp_.patches[pi], dense_points());
+      if (!(patch_min_at(mp_.patches[pi], dense) < options_.target - 0.1)) continue;
+      grids[pi] = std::move(dense);
+      any = true;
+      ++out_.dense_patches;
+    }
+    if (any) run(grids, options_.target);
+  }
+
+  // Each patch's dense grid with the witnesses in it added.
+  std::vector<SampleGrid> focus_grids(const std::vector<std::pair<int, Eigen::Vector3d>>& witnesses) const {
+    std::vector<std::vector<Eigen::Vector3d>> at(mp_.patches.size());
+    for (const auto& [patch, t] : witnesses) {
+      if (patch < 0 || patch >= static_cast<int>(mp_.patches.size()))
+        throw bad_input("optimize_jacobians: a witness names patch " + std::to_string(patch) + " of " +
+                        std::to_string(mp_.patches.size()));
+      at[static_cast<std::size_t>(patch)].push_back(t);
+    }
+    std::vector<SampleGrid> out;
+    for (std::size_t pi = 0; pi < mp_.patches.size(); ++pi)
+      out.push_back(detail::repair_sample_grid(mp_.patches[pi], dense_points(), at[pi]));
+    return out;
+  }
+
+  // Samples still negative on a patch's focus grid get a last pass aimed at
+  // them alone: with the target at 0 the many samples between 0 and the
+  // target no longer weigh against the moves that would open the folds. It
+  // is kept only if it raises their lowest sample. The other patches keep
+  // their grids, which are within their focus grids, all non-negative there:
+  // the lowest sample after the pass is the repair's own min_after.
+  void aim_at_negative_samples(std::vector<SampleGrid> grids, const std::vector<SampleGrid>& focus) {
+    double lowest_before = 0.0;
+    for (std::size_t pi = 0; pi < mp_.patches.size(); ++pi) {
+      const double lowest = patch_min_at(mp_.patches[pi], focus[pi]);
+      if (!(lowest < 0.0)) continue;
+      grids[pi] = focus[pi];
+      ++out_.focus_patches;
+      lowest_before = std::min(lowest_before, lowest);
+    }
+    if (out_.focus_patches == 0) return;
+    const JacobianOptimizationResult before = out_;
+    const std::vector<char> moved_before = moved_;
+    std::vector<Eigen::MatrixXd> kept;
+    for (const Patch& p : mp_.patches) kept.push_back(p.control_points);
+    run(grids, 0.0);
+    out_.focus_min_before = lowest_before;
+    out_.focus_min_after = out_.min_after;
+    if (out_.focus_min_after > out_.focus_min_before) return;
+    for (std::size_t pi = 0; pi < mp_.patches.size(); ++pi) mp_.patches[pi].control_points = kept[pi];
+    out_ = before;
+    moved_ = moved_before;
+    out_.focus_kept = false;
+    out_.focus_min_before = out_.focus_min_after = lowest_before;
+  }
+
+  JacobianOptimizationResult& result() { return out_; }
+
+  // The result with the moved control points counted and measured.
+  JacobianOptimizationResult finish() {
+    for (int g = 0; g < num_.count; ++g) {
+      if (!moved_[static_cast<std::size_t>(g)]) continue;
+      ++out_.moved_points;
+      out_.max_move = std::max(out_.max_move, (position(g) - start_[static_cast<std::size_t>(g)]).norm());
+    }
+    return out_;
+  }
+
+ private:
+  int dense_points() const { return 2 * options_.points - 1; }
+
+  Eigen::Vector3d position(int g) const {
+    const Copy& c0 = copies_[static_cast<std::size_t>(g)].front();
+    return mp_.patches[static_cast<std::size_t>(c0.patch)].control_points.row(c0.local).transpose();
+  }
+
   // Sweeps until no control point moves, or the number of control points
   // next to samples below the target has not fallen to a new low for
   // kStallSweeps sweeps (the folds left are held by points that cannot
   // move them, and further moves only cost fidelity), or options.sweeps.
-  auto sweeps = [&](Optimizer& opt, double target) {
+  void sweeps(Optimizer& opt, double target) {
     long long fewest_active = std::numeric_limits<long long>::max();
     int since_fewest = 0;
-    out.stop_reason = "the sweep limit";
-    for (int sweep = 0; sweep < options.sweeps; ++sweep) {
-      if (options.progress)
-        options.progress("Jacobian repair (sweeps)", static_cast<std::size_t>(sweep), static_cast<std::size_t>(options.sweeps));
-      long long moves = 0;
-      std::vector<char> active(static_cast<std::size_t>(num.count), 0);
+    out_.stop_reason = "the sweep limit";
+    for (int sweep = 0; sweep < options_.sweeps; ++sweep) {
+      if (options_.progress)
+        options_.progress("Jacobian repair (sweeps)", static_cast<std::size_t>(sweep), static_cast<std::size_t>(options_.sweeps));
+      std::vector<char> active(static_cast<std::size_t>(num_.count), 0);
       opt.below_target(target, [&](int patch, int local) {
-        active[static_cast<std::size_t>(num.global[static_cast<std::size_t>(patch)][static_cast<std::size_t>(local)])] = 1;
+        active[static_cast<std::size_t>(num_.global[static_cast<std::size_t>(patch)][static_cast<std::size_t>(local)])] = 1;
       });
       const long long n_active = std::count(active.begin(), active.end(), 1);
       if (n_active == 0) {
-        out.stop_reason = "the target reached";
+        out_.stop_reason = "the target reached";
         break;
       }
       if (n_active < fewest_active) {
         fewest_active = n_active;
         since_fewest = 0;
       } else if (++since_fewest >= kStallSweeps) {
-        out.stop_reason = "no progress in " + std::to_string(kStallSweeps) + " sweeps";
+        out_.stop_reason = "no progress in " + std::to_string(kStallSweeps) + " sweeps";
         break;
       }
-      for (int g = 0; g < num.count; ++g) {
-        const int con = cons[static_cast<std::size_t>(g)];
+      long long moves = 0;
+      for (int g = 0; g < num_.count; ++g) {
+        const int con = cons_[static_cast<std::size_t>(g)];
         if (con == kFixed || !active[static_cast<std::size_t>(g)]) continue;
-        if (opt.improve(copies[static_cast<std::size_t>(g)], con, slide, target)) {
-          moved[static_cast<std::size_t>(g)] = 1;
+        if (opt.improve(copies_[static_cast<std::size_t>(g)], con, slide_, target)) {
+          moved_[static_cast<std::size_t>(g)] = 1;
           ++moves;
         }
       }
-      out.moves += moves;
-      ++out.sweeps;
+      out_.moves += moves;
+      ++out_.sweeps;
       if (moves == 0) {
-        out.stop_reason = "no control point can move";
+        out_.stop_reason = "no control point can move";
         break;
       }
     }
-  };
-  // The joint optimization first, then sweeps for what it left below the target.
-  auto repair = [&](const std::vector<int>& points, double target) {
-    if (options.iterations > 0) {
-      const detail::JointRepairResult j =
-          detail::joint_repair(mp, num, copies, cons, slide, target, points, options.iterations, &moved,
-                               options.progress);
-      out.joint_variables += j.variables;
-      out.joint_iterations += j.iterations;
-      out.joint_stop = j.stop;
-    }
-    Optimizer opt(mp, points);
-    sweeps(opt, target);
-    opt.global(options.target, &out.min_after, &out.below_after);
-  };
-  std::vector<int> points(mp.patches.size(), options.points);
-  Optimizer(mp, points).global(options.target, &out.min_before, &out.below_before);
-  repair(points, options.target);
-  // A fold can open between the sample points where control points moved:
-  // those patches are sampled twice as densely, and where that finds a point
-  // well below the target they are repaired again on the dense samples.
-  std::vector<char> touched(mp.patches.size(), 0);
-  for (int g = 0; g < num.count; ++g)
-    if (moved[static_cast<std::size_t>(g)])
-      for (const Copy& c : copies[static_cast<std::size_t>(g)]) touched[static_cast<std::size_t>(c.patch)] = 1;
-  const int dense = 2 * options.points - 1;
-  bool any_dense = false;
-  for (std::size_t pi = 0; pi < mp.patches.size(); ++pi)
-    if (touched[pi] && patch_min_at(mp.patches[pi], dense) < options.target - 0.1) {
-      points[pi] = dense;
-      any_dense = true;
-      ++out.dense_patches;
-    }
-  if (any_dense) repair(points, options.target);
-  // Samples still negative get a last pass aimed at them alone: with the
-  // target at 0 the many samples between 0 and the target no longer weigh
-  // against the moves that would open the folds. It is kept only if it
-  // raises their lowest sample.
-  // The lowest sample over every patch is theirs: the others' samples are
-  // among their dense ones, all non-negative; after the pass it is the
-  // repair's own min_after on the same samples.
-  auto aim_at_negative_samples = [&](std::vector<int> points) {
-    double lowest_before = 0.0;
-    for (std::size_t pi = 0; pi < mp.patches.size(); ++pi) {
-      const double lowest = patch_min_at(mp.patches[pi], dense);
-      if (!(lowest < 0.0)) continue;
-      points[pi] = dense;
-      ++out.focus_patches;
-      lowest_before = std::min(lowest_before, lowest);
-    }
-    if (out.focus_patches == 0) return;
-    const JacobianOptimizationResult before = out;
-    const std::vector<char> moved_before = moved;
-    std::vector<Eigen::MatrixXd> kept;
-    for (const Patch& p : mp.patches) kept.push_back(p.control_points);
-    repair(points, 0.0);
-    out.focus_min_before = lowest_before;
-    out.focus_min_after = out.min_after;
-    if (out.focus_min_after > out.focus_min_before) return;
-    for (std::size_t pi = 0; pi < mp.patches.size(); ++pi) mp.patches[pi].control_points = kept[pi];
-    out = before;
-    moved = moved_before;
-    out.focus_kept = false;
-    out.focus_min_before = out.focus_min_after = lowest_before;
-  };
-  if (out.min_after < 0.0) aim_at_negative_samples(points);
-  for (int g = 0; g < num.count; ++g) {
-    if (!moved[static_cast<std::size_t>(g)]) continue;
-    ++out.moved_points;
-    const Copy& c0 = copies[static_cast<std::size_t>(g)].front();
-    const Eigen::Vector3d now = mp.patches[static_cast<std::size_t>(c0.patch)].control_points.row(c0.local).transpose();
-    out.max_move = std::max(out.max_move, (now - start[static_cast<std::size_t>(g)]).norm());
   }
-  return out;
+
+  MultiPatch& mp_;
+  const SlideFn& slide_;
+  const JacobianOptimizationOptions& options_;
+  GlobalNumbering num_;
+  std::vector<std::vector<Copy>> copies_;
+  std::vector<int> cons_;
+  std::vector<char> moved_;
+  std::vector<Eigen::Vector3d> start_;
+  JacobianOptimizationResult out_;
+};
+
+}  // namespace
+
+JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& slide,
+                                              const std::vector<std::pair<int, Side>>& fixed_sides,
+                                              const JacobianOptimizationOptions& options) {
+  check_options(mp, options);
+  Repair repair(mp, slide, fixed_sides, options);
+  std::vector<SampleGrid> grids = repair.grids(options.points);
+  repair.measure_before(grids);
+  repair.run(grids, options.target);
+  repair.dense_pass(grids);
+  if (repair.result().min_after < 0.0) repair.aim_at_negative_samples(grids, repair.focus_grids({}));
+  return repair.finish();
+}
+
+JacobianOptimizationResult repair_at_witnesses(MultiPatch& mp, const SlideFn& slide,
+                                               const std::vector<std::pair<int, Side>>& fixed_sides,
+                                               const std::vector<std::pair<int, Eigen::Vector3d>>& witnesses,
+                                               const JacobianOptimizationOptions& options) {
+  check_options(mp, options);
+  Repair repair(mp, slide, fixed_sides, options);
+  const std::vector<SampleGrid> grids = repair.grids(options.points);
+  repair.measure_before(grids);
+  repair.aim_at_negative_samples(grids, repair.focus_grids(witnesses));
+  JacobianOptimizationResult& r = repair.result();
+  if (r.focus_patches > 0) {
+    r.min_before = std::min(r.min_before, r.focus_min_before);
+    r.min_after = r.focus_min_after;
+  } else {
+    r.min_after = r.min_before;
+  }
+  return repair.finish();
 }
 
 }  // namespace igaprep::spline

@@ -1,5 +1,6 @@
 #include "repair_common.h"
 
+#include <algorithm>
 #include <array>
 #include <string>
 
@@ -54,9 +55,17 @@ std::vector<double> repair_sample_params(const std::vector<double>& knots, int p
   return params;
 }
 
-std::array<std::vector<double>, 3> repair_sample_grid(const Patch& p, int points) {
-  std::array<std::vector<double>, 3> params;
-  for (std::size_t d = 0; d < 3; ++d) params[d] = repair_sample_params(p.knots[d], points);
+SampleGrid repair_sample_grid(const Patch& p, int points, const std::vector<Eigen::Vector3d>& extra) {
+  SampleGrid params;
+  for (std::size_t d = 0; d < 3; ++d) {
+    std::vector<double>& t = params[d];
+    t = repair_sample_params(p.knots[d], points);
+    const double lo = t.front(), hi = t.back();
+    for (const Eigen::Vector3d& x : extra)
+      if (x[static_cast<Eigen::Index>(d)] > lo && x[static_cast<Eigen::Index>(d)] < hi) t.push_back(x[static_cast<Eigen::Index>(d)]);
+    std::sort(t.begin(), t.end());
+    t.erase(std::unique(t.begin(), t.end()), t.end());
+  }
   return params;
 }
 

@@ -43,8 +43,11 @@ std::vector<int> control_point_constraints(const MultiPatch& mp, const GlobalNum
 // Sample parameters of one direction: `points` per element, ends included,
 // each element boundary once.
 std::vector<double> repair_sample_params(const std::vector<double>& knots, int points);
-// The same in each direction of a patch: its tensor grid of samples.
-std::array<std::vector<double>, 3> repair_sample_grid(const Patch& p, int points);
+// A patch's sample parameters per direction: a tensor grid.
+using SampleGrid = std::array<std::vector<double>, 3>;
+// repair_sample_params in each direction of a patch, with each of `extra`'s
+// parameter points added to every direction (so the grid holds them).
+SampleGrid repair_sample_grid(const Patch& p, int points, const std::vector<Eigen::Vector3d>& extra = {});
 
 // Distance from x to the nearest distinct neighbouring control point in any copy's grid
 // (+infinity when every neighbour coincides with x).

@@ -308,4 +308,55 @@ TEST(OptimizeJacobian, BadInputThrows) {
   EXPECT_FALSE(bad_input(mp, {{0, 6}}, {}));  // the same call with good input passes
 }
 
+
+// One cubic element x(u, v, w) = (f(u), v + 0.2 u, w) with f' = 3 ((u - 0.31)^2 - 0.002):
+// the scaled Jacobian f' / |x_u| is negative only for u in (0.265, 0.355),
+// between the dense samples at u = 0.25 and 0.375, lowest (-0.030) at u = 0.31.
+Patch fold_between_samples() {
+  Patch P;
+  P.degrees = {{3, 3, 3}};
+  for (auto& k : P.knots) k = uniform_knot_vector(3, 4);
+  const double a = 0.31, eps = 0.002;
+  const double c1 = 3.0 * a * a - 3.0 * eps, c2 = -3.0 * a, c3 = 1.0;  // f = c1 u + c2 u^2 + c3 u^3
+  const double f[4] = {0.0, c1 / 3.0, 2.0 * c1 / 3.0 + c2 / 3.0, c1 + c2 + c3};  // its Bernstein coefficients
+  P.control_points.resize(64, 3);
+  for (int k = 0; k < 4; ++k)
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i) P.control_points.row(P.index(i, j, k)) << f[i], j / 3.0 + 0.2 * i / 3.0, k / 3.0;
+  return P;
+}
+
+// The lowest scaled Jacobian along u (v = w = 0.5) at 601 points.
+double min_along_u(const Patch& P) {
+  double lo = std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= 600; ++i) lo = std::min(lo, scaled_jacobian(evaluate_jacobian(P, Eigen::Vector3d(i / 600.0, 0.5, 0.5))));
+  return lo;
+}
+
+// A fold between the dense samples is seen only through a witness (the
+// check's certificate finds such points): without one the pass finds no
+// negative sample and leaves the patch; with the fold's point it opens it.
+TEST(RepairAtWitnesses, AFoldBetweenTheSamplesIsOpenedOnlyWhereAWitnessPointsAtIt) {
+  const Patch folded = fold_between_samples();
+  ASSERT_NEAR(min_along_u(folded), -0.030, 0.001);
+  MultiPatch blind = model({folded});
+  const JacobianOptimizationResult none = repair_at_witnesses(blind, nullptr, {}, {});
+  EXPECT_EQ(none.focus_patches, 0);
+  EXPECT_EQ(none.moved_points, 0);
+  EXPECT_GT(none.min_before, 0.0);  // the samples do not see the fold
+  EXPECT_EQ(blind.patches[0].control_points, folded.control_points);
+
+  MultiPatch mp = model({folded});
+  const JacobianOptimizationResult r = repair_at_witnesses(mp, nullptr, {}, {{0, Eigen::Vector3d(0.31, 0.5, 0.5)}});
+  EXPECT_EQ(r.focus_patches, 1);
+  EXPECT_TRUE(r.focus_kept);
+  EXPECT_NEAR(r.focus_min_before, -0.030, 0.001);
+  EXPECT_EQ(r.min_before, r.focus_min_before);
+  EXPECT_GE(r.focus_min_after, 0.0);
+  EXPECT_GT(r.moved_points, 0);
+  EXPECT_GT(min_along_u(mp.patches[0]), 0.0);  // open between the samples too
+
+  EXPECT_THROW(repair_at_witnesses(mp, nullptr, {}, {{1, Eigen::Vector3d(0.5, 0.5, 0.5)}}), igaprep::Error);
+}
+
 }  // namespace

@@ -82,4 +82,19 @@ JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& sli
                                               const std::vector<std::pair<int, Side>>& fixed_sides,
                                               const JacobianOptimizationOptions& options = {});
 
+// The last pass of optimize_jacobians alone, for folds its samples missed:
+// `witnesses` are points (patch, its parameters) where det J was found
+// negative elsewhere (the check's certificate finds them between the
+// samples). Each witness's coordinates join its patch's dense samples in
+// every direction; the patches whose dense samples are then negative are
+// repaired with target 0, kept only if their lowest sample rises (focus_*
+// in the result; min_before / min_after include the witnesses' samples).
+// Inputs as optimize_jacobians; options.points sets the dense grid (2
+// points - 1 per element and direction). Throws bad_input for a witness
+// naming no patch of the model.
+JacobianOptimizationResult repair_at_witnesses(MultiPatch& mp, const SlideFn& slide,
+                                               const std::vector<std::pair<int, Side>>& fixed_sides,
+                                               const std::vector<std::pair<int, Eigen::Vector3d>>& witnesses,
+                                               const JacobianOptimizationOptions& options = {});
+
 }  // namespace igaprep::spline

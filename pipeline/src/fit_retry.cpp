@@ -6,6 +6,7 @@
 
 #include "igaprep/core/text.h"
 #include "igaprep/iga_check/criteria.h"
+#include "stage_timer.h"
 
 namespace igaprep::pipeline {
 
@@ -50,6 +51,44 @@ FitRetryDecision or_fit_faces(FitRetryDecision d, const Check& check, int elemen
   d.elements = elements;
   d.reason = text("no finer fit: %s; fidelity alone failed, %.2f times its limit", d.reason.c_str(), excess);
   return d;
+}
+
+// Up to kNegativeElementRounds rounds of the repair aimed at the points
+// where the check found det J negative, each kept when the check after it is better; each
+// round is a "repair" summary line, the repair's time with its check's.
+void repair_negative_elements(const Case& c, const Surfaces& surfaces, const Decomposition& d, MadeAttempt& m,
+                              Observer& observer) {
+  if (!(c.jacobian.target > 0.0) || !repair_skip_reason(m.vp).empty()) return;
+  // Every round's points stay among the samples, so that a fold opened in
+  // one round is not closed again by the next.
+  std::vector<std::pair<int, Eigen::Vector3d>> witnesses;
+  auto stray = [&] {
+    const CheckFigures& f = m.check.figures;
+    return f.negative > 0 && static_cast<double>(f.negative) <= kNegativeElementShare * static_cast<double>(f.elements);
+  };
+  for (int round = 1; round <= kNegativeElementRounds && stray(); ++round) {
+    StageTimer timer;
+    auto say = [&](const std::string& line) { observer.stage_finished({"repair", timer.seconds(), line, {}}); };
+    Fit fit = m.fit;
+    const auto found = negative_points(m.check.report);
+    witnesses.insert(witnesses.end(), found.begin(), found.end());
+    const spline::JacobianOptimizationResult r = repair_at_negative_points(c, d, m.vp, fit.model, witnesses, observer);
+    const std::string what = text("repair at the check's %ld negative elements (round %d): %d patches, their lowest "
+                                  "sample %.3f -> %.3f",
+                                  m.check.figures.negative, round, r.focus_patches, r.focus_min_before,
+                                  r.focus_min_after);
+    if (r.focus_patches == 0 || !r.focus_kept) {
+      say(what + ": not raised, the model stays");
+      return;
+    }
+    Check check = check_stage(fit.model, surfaces.inputs, c.check, observer);
+    const bool better = better_attempt(check, m.check);
+    say(what + text("; the check then: %ld elements not certified positive (was %ld), %s", uncertified_elements(check),
+                    uncertified_elements(m.check), better ? "kept" : "not kept"));
+    if (!better) return;
+    m.fit = std::move(fit);
+    m.check = std::move(check);
+  }
 }
 
 }  // namespace
@@ -176,6 +215,7 @@ FitAttempt best_fit_attempt(const Case& c, const std::function<MadeAttempt(const
 FitAttempt fit_and_check(const Case& c, const Surfaces& surfaces, const Decomposition& d, Observer& observer) {
   std::optional<param::VolumeParam> last;  // the blocks of the last attempt
   int last_elements = 0;
+  auto say = [&](const std::string& line) { observer.stage_finished({"retry", 0.0, line, {}}); };
   auto make = [&](const Case& attempt) {
     MadeAttempt m;
     const bool same_samples = last && last_elements == attempt.fit.elements;
@@ -184,9 +224,10 @@ FitAttempt fit_and_check(const Case& c, const Surfaces& surfaces, const Decompos
     last_elements = attempt.fit.elements;
     m.fit = fit_stage(attempt, surfaces, d, m.vp, observer);
     m.check = check_stage(m.fit.model, surfaces.inputs, attempt.check, observer);
+    repair_negative_elements(attempt, surfaces, d, m, observer);
     return m;
   };
-  return best_fit_attempt(c, make, [&](const std::string& line) { observer.stage_finished({"retry", 0.0, line, {}}); });
+  return best_fit_attempt(c, make, say);
 }
 
 }  // namespace igaprep::pipeline

@@ -42,18 +42,28 @@ std::vector<std::pair<int, spline::Side>> collapsed_sides(const param::VolumePar
   return fixed;
 }
 
-// Moves the control points where the sampled scaled Jacobian is below the
-// case's target (optimize_jacobian.h): those on T1 and the Ti slide along
-// them, collapsed sides stay.
-spline::JacobianOptimizationResult raise_jacobians(const Case& c, const Decomposition& d, const param::VolumeParam& vp,
-                                                   spline::MultiPatch& mp, Observer& observer) {
+// Calls repair(slide, fixed sides, options) with what both repairs of a
+// fitted model take: control points on T1 and the Ti slide along them,
+// collapsed sides stay, the case's options.
+template <class F>
+spline::JacobianOptimizationResult with_repair_inputs(const Case& c, const Decomposition& d,
+                                                      const param::VolumeParam& vp, Observer& observer, F&& repair) {
   const std::vector<param::SurfaceProjector> surfaces = param::surface_projectors(d.H);
-  auto slide = [&](int surface, const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
+  const spline::SlideFn slide = [&](int surface, const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
     return surfaces.at(static_cast<std::size_t>(surface)).slide(from, to);
   };
   spline::JacobianOptimizationOptions options = c.jacobian;
   options.progress = progress_to(observer);
-  return spline::optimize_jacobians(mp, slide, collapsed_sides(vp), options);
+  return repair(slide, collapsed_sides(vp), options);
+}
+
+// Moves the control points where the sampled scaled Jacobian is below the
+// case's target (optimize_jacobian.h).
+spline::JacobianOptimizationResult raise_jacobians(const Case& c, const Decomposition& d, const param::VolumeParam& vp,
+                                                   spline::MultiPatch& mp, Observer& observer) {
+  return with_repair_inputs(c, d, vp, observer, [&](const auto& slide, const auto& fixed, const auto& options) {
+    return spline::optimize_jacobians(mp, slide, fixed, options);
+  });
 }
 
 // The faces on each input surface fitted to it, then the other control
@@ -75,6 +85,21 @@ std::vector<spline::SurfaceFitResult> fit_surfaces(const Case& c, const Surfaces
 }
 
 }  // namespace
+
+std::vector<std::pair<int, Eigen::Vector3d>> negative_points(const iga_check::CheckReport& report) {
+  std::vector<std::pair<int, Eigen::Vector3d>> out;
+  for (const iga_check::ElementCertificate& e : report.certificates)
+    if (e.status == iga_check::ElementStatus::Negative) out.emplace_back(e.patch, e.location);
+  return out;
+}
+
+spline::JacobianOptimizationResult repair_at_negative_points(
+    const Case& c, const Decomposition& d, const param::VolumeParam& vp, spline::MultiPatch& mp,
+    const std::vector<std::pair<int, Eigen::Vector3d>>& witnesses, Observer& observer) {
+  return with_repair_inputs(c, d, vp, observer, [&](const auto& slide, const auto& fixed, const auto& options) {
+    return spline::repair_at_witnesses(mp, slide, fixed, witnesses, options);
+  });
+}
 
 Fit fit_stage(const Case& c, const Surfaces& surfaces, const Decomposition& d, const param::VolumeParam& vp,
               Observer& observer) {

@@ -326,14 +326,17 @@ class Repair {
     if (any) run(grids, options_.target);
   }
 
-  // Each patch's dense grid with the witnesses in it added.
+  // Each patch's dense grid with the witnesses in it added, each with the
+  // points halfway to its neighbouring dense samples: the fold around a
+  // witness, not only its one point, weighs in the repair.
   std::vector<SampleGrid> focus_grids(const std::vector<std::pair<int, Eigen::Vector3d>>& witnesses) const {
     std::vector<std::vector<Eigen::Vector3d>> at(mp_.patches.size());
     for (const auto& [patch, t] : witnesses) {
       if (patch < 0 || patch >= static_cast<int>(mp_.patches.size()))
         throw bad_input("optimize_jacobians: a witness names patch " + std::to_string(patch) + " of " +
                         std::to_string(mp_.patches.size()));
-      at[static_cast<std::size_t>(patch)].push_back(t);
+      const Eigen::Vector3d half = half_dense_spacing(mp_.patches[static_cast<std::size_t>(patch)], t);
+      for (const double s : {-1.0, 0.0, 1.0}) at[static_cast<std::size_t>(patch)].push_back(t + s * half);
     }
     std::vector<SampleGrid> out;
     for (std::size_t pi = 0; pi < mp_.patches.size(); ++pi)
@@ -386,6 +389,19 @@ class Repair {
 
  private:
   int dense_points() const { return 2 * options_.points - 1; }
+
+  // Per direction, half the dense samples' spacing in the element holding t.
+  Eigen::Vector3d half_dense_spacing(const Patch& p, const Eigen::Vector3d& t) const {
+    Eigen::Vector3d half;
+    for (int d = 0; d < 3; ++d) {
+      const std::vector<double> brk = unique_knots(p.knots[static_cast<std::size_t>(d)]);
+      auto hi = std::upper_bound(brk.begin(), brk.end(), t[d]);
+      if (hi == brk.end()) --hi;
+      if (hi == brk.begin()) ++hi;
+      half[d] = (*hi - *(hi - 1)) / (2.0 * (dense_points() - 1));
+    }
+    return half;
+  }
 
   Eigen::Vector3d position(int g) const {
     const Copy& c0 = copies_[static_cast<std::size_t>(g)].front();

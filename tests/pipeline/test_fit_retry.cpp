@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <map>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -269,6 +270,43 @@ TEST(FitRetry, Sphere2IsRefittedUpToItsCapAndTheFinestIsKept) {
   EXPECT_GT(fidelity, 0.005);
   const auto options = nlohmann::json::parse(r.model.provenance_inputs).at("options").at("fit");
   EXPECT_EQ(options.at("elements").get<int>(), 3) << "the provenance gives the kept attempt's settings";
+}
+
+// The repair's samples at the element corners only ("jacobian_points" 2)
+// and a low target: they see no sample below it and move nothing, while
+// the check finds 10 negative elements on torus3 at 9 elements per
+// direction. Rounds of the repair at the points the certificate found
+// then certify every element (2026-12-07: 10 -> 1 -> 0, in two rounds).
+TEST(FitRetry, RepairRoundsAtTheChecksNegativePointsCertifyTorus3) {
+  using pipeline_test::Recorder;
+  const Case c = pipeline_test::model_case(
+      "torus3", R"({"fit": {"elements": 9, "jacobian_points": 2, "jacobian_target": 0.1}, "validation": {"enabled": false},
+                    "export": []})",
+      "fit_retry_rounds");
+  Recorder rec;
+  const auto r = igaprep::pipeline::run(c, rec);
+  std::vector<std::string> checks, rounds;
+  for (const auto& s : rec.stages) {
+    if (s.stage == "check") checks.push_back(s.headline);
+    if (s.stage == "repair") rounds.push_back(s.headline);
+  }
+  ASSERT_GE(checks.size(), 2u);
+  const std::regex negative(" ([0-9]+) negative,");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(checks.front(), m, negative)) << checks.front();
+  EXPECT_GE(std::stoi(m[1]), 2) << checks.front();
+  ASSERT_FALSE(rounds.empty());
+  EXPECT_LE(rounds.size(), static_cast<std::size_t>(igaprep::pipeline::kNegativeElementRounds));
+  EXPECT_NE(rounds.front().find("(round 1)"), std::string::npos) << rounds.front();
+  EXPECT_NE(rounds.front().find("kept"), std::string::npos) << rounds.front();
+  EXPECT_TRUE(r.passed) << checks.back();
+  double negatives = -1.0, fidelity = 1.0;
+  for (const auto& [key, value] : r.report.pipeline->figures) {
+    if (key == "negative_elements") negatives = value;
+    if (key == "fidelity_relative_outer") fidelity = value;
+  }
+  EXPECT_EQ(negatives, 0.0);
+  EXPECT_LT(fidelity, 0.0025);  // 0.163 % as before the rounds
 }
 
 }  // namespace

@@ -53,6 +53,19 @@ constexpr double kFaceFitReach = 2.0;
 constexpr int kFaceFitIterations = 20;
 constexpr double kFaceFitSmoothing = 0.003;
 
+// Rounds of the repair aimed at the points where the check found det J
+// negative (repair_at_negative_points) after a check with negative
+// elements, each kept only when the check then counts fewer elements not
+// certified positive (the hand: 25 negative elements between the repair's
+// samples, docs/decomposition.md section 6).
+constexpr int kNegativeElementRounds = 4;
+// The rounds run only while the negative elements are at most this share
+// of the model's: stray folds between the repair's samples (the hand: 25
+// of 170,640, 0.015 %). Above it the folds are the samples' (the propeller
+// at 4 elements: 454 of 33,536, 1.4 %, where four rounds left 200 for
+// fidelity 1.30 -> 1.98 % and six minutes).
+constexpr double kNegativeElementShare = 0.001;
+
 struct FitRetryDecision {
   bool retry = false;
   int elements = 0;        // per direction for the next attempt (when retry)
@@ -103,7 +116,8 @@ struct MadeAttempt {
 FitAttempt best_fit_attempt(const Case& c, const std::function<MadeAttempt(const Case&)>& make,
                             const std::function<void(const std::string&)>& say);
 
-// The param, fit and check stages; then again with more elements per
+// The param, fit and check stages (with rounds of kNegativeElementRounds
+// where the check found negative elements and the repair is on); then again with more elements per
 // direction (or the faces fitted) while decide_fit_retry says so and each
 // attempt is better than the best so far; an attempt with the elements of
 // the last one reuses its sampled blocks. Each decision after a failed check is a "retry"

@@ -3,6 +3,7 @@
 // to 7): H with M embedded (TetGen's second and last run), the w-field, M's
 // layout; the sampled hex blocks (strategy 2 or 1); their conforming
 // B-spline fit with labelled sides and repaired Jacobians.
+#include "igaprep/iga_check/report.h"
 #include "igaprep/param/base_layout.h"
 #include "igaprep/param/base_surface.h"
 #include "igaprep/param/decomposition_mesh.h"
@@ -48,5 +49,17 @@ param::VolumeParam param_stage(const Case& c, const Surfaces& surfaces, const De
 // then optimize_jacobians when the case's target is above 0.
 Fit fit_stage(const Case& c, const Surfaces& surfaces, const Decomposition& d, const param::VolumeParam& vp,
               Observer& observer);
+
+// The points (patch, its parameters) where a check's certificate found det
+// J negative.
+std::vector<std::pair<int, Eigen::Vector3d>> negative_points(const iga_check::CheckReport& report);
+
+// The Jacobian repair's last pass once more, with `witnesses` (points
+// where det J was found negative, negative_points; they lie between the
+// repair's own samples) among its samples (spline::repair_at_witnesses): on
+// `mp`, a fitted model of `vp`'s blocks, with the case's repair options.
+spline::JacobianOptimizationResult repair_at_negative_points(
+    const Case& c, const Decomposition& d, const param::VolumeParam& vp, spline::MultiPatch& mp,
+    const std::vector<std::pair<int, Eigen::Vector3d>>& witnesses, Observer& observer);
 
 }  // namespace igaprep::pipeline

@@ -85,8 +85,8 @@ JacobianOptimizationResult optimize_jacobians(MultiPatch& mp, const SlideFn& sli
 // The last pass of optimize_jacobians alone, for folds its samples missed:
 // `witnesses` are points (patch, its parameters) where det J was found
 // negative elsewhere (the check's certificate finds them between the
-// samples). Each witness's coordinates join its patch's dense samples in
-// every direction; the patches whose dense samples are then negative are
+// samples). Each witness's coordinates, and those halfway from it to the
+// next dense samples, join its patch's dense samples in every direction; the patches whose dense samples are then negative are
 // repaired with target 0, kept only if their lowest sample rises (focus_*
 // in the result; min_before / min_after include the witnesses' samples).
 // Inputs as optimize_jacobians; options.points sets the dense grid (2

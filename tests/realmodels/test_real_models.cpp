@@ -105,7 +105,8 @@ TEST(RealModels, TheKittensCheckPassesWithDefaultKeys) {
 // without the repair, fidelity 1.21 %, volume -0.17 %; with every key at
 // its default 197 negative, 1.207 %, -0.19 %, 293 s, before the halving;
 // with the halving, the close sides merged and the last repair pass: 25
-// negative of 170,640, fidelity 0.455 %, volume -0.044 %, 508 s, in
+// negative of 170,640, fidelity 0.455 %, volume -0.044 %, 508 s; with the
+// repair's rounds at the check's negative points 6 negative, 638 s; in
 // docs/validation.md).
 TEST(RealModels, TheHandsModelCoversItsFiveFingers) {
   const std::string obj = std::string(IGAPREP_SHARED_MODELS_DIR) + "/hand.obj";

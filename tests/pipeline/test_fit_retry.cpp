@@ -273,14 +273,17 @@ TEST(FitRetry, Sphere2IsRefittedUpToItsCapAndTheFinestIsKept) {
 }
 
 // The repair's samples at the element corners only ("jacobian_points" 2)
-// and a low target: they see no sample below it and move nothing, while
-// the check finds 10 negative elements on torus3 at 9 elements per
-// direction. Rounds of the repair at the points the certificate found
-// then certify every element (2026-12-07: 10 -> 1 -> 0, in two rounds).
+// and a low target: they see no sample below it, while the check finds a
+// negative element on torus3 (6 elements per direction, no finer fit).
+// Rounds of the repair at the points the certificate found then certify
+// every element (2026-12-07: the first round raises the element's
+// smallest scaled Jacobian -0.008 -> -0.001, kept though the count is the
+// same; the second opens it: 0.023).
 TEST(FitRetry, RepairRoundsAtTheChecksNegativePointsCertifyTorus3) {
   using pipeline_test::Recorder;
   const Case c = pipeline_test::model_case(
-      "torus3", R"({"fit": {"elements": 9, "jacobian_points": 2, "jacobian_target": 0.1}, "validation": {"enabled": false},
+      "torus3", R"({"fit": {"elements": 6, "max_elements": 6, "jacobian_points": 2, "jacobian_target": 0.1},
+                    "validation": {"enabled": false},
                     "export": []})",
       "fit_retry_rounds");
   Recorder rec;
@@ -294,11 +297,11 @@ TEST(FitRetry, RepairRoundsAtTheChecksNegativePointsCertifyTorus3) {
   const std::regex negative(" ([0-9]+) negative,");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(checks.front(), m, negative)) << checks.front();
-  EXPECT_GE(std::stoi(m[1]), 2) << checks.front();
-  ASSERT_FALSE(rounds.empty());
+  EXPECT_GE(std::stoi(m[1]), 1) << checks.front();
+  ASSERT_GE(rounds.size(), 1u);
   EXPECT_LE(rounds.size(), static_cast<std::size_t>(igaprep::pipeline::kNegativeElementRounds));
   EXPECT_NE(rounds.front().find("(round 1)"), std::string::npos) << rounds.front();
-  EXPECT_NE(rounds.front().find("kept"), std::string::npos) << rounds.front();
+  for (const std::string& line : rounds) EXPECT_EQ(line.find("not kept"), std::string::npos) << line;
   EXPECT_TRUE(r.passed) << checks.back();
   double negatives = -1.0, fidelity = 1.0;
   for (const auto& [key, value] : r.report.pipeline->figures) {
@@ -306,7 +309,7 @@ TEST(FitRetry, RepairRoundsAtTheChecksNegativePointsCertifyTorus3) {
     if (key == "fidelity_relative_outer") fidelity = value;
   }
   EXPECT_EQ(negatives, 0.0);
-  EXPECT_LT(fidelity, 0.0025);  // 0.163 % as before the rounds
+  EXPECT_LT(fidelity, 0.0025);  // 0.189 % as before the rounds
 }
 
 }  // namespace

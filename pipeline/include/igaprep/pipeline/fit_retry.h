@@ -100,6 +100,7 @@ struct FitAttempt {
   Check check;
   int attempts = 0;  // fits made, the kept one among them
   int rectangles = 0, boundary_segments = 0;  // of the layout its blocks were built on
+  param::VolumeParam vp;                      // the sampled blocks it was fitted to
 };
 
 // One attempt as the loop sees it: the fit, its check and the sampled
@@ -116,12 +117,14 @@ struct MadeAttempt {
 FitAttempt best_fit_attempt(const Case& c, const std::function<MadeAttempt(const Case&)>& make,
                             const std::function<void(const std::string&)>& say);
 
-// The param, fit and check stages (with rounds of kNegativeElementRounds
-// where the check found negative elements and the repair is on); then again with more elements per
+// The param, fit and check stages; then again with more elements per
 // direction (or the faces fitted) while decide_fit_retry says so and each
 // attempt is better than the best so far; an attempt with the elements of
 // the last one reuses its sampled blocks. Each decision after a failed check is a "retry"
-// summary line (none when the first check passes). Output: the best attempt.
+// summary line (none when the first check passes). When the best attempt
+// fails with negative elements, rounds of the repair at their points follow
+// (kNegativeElementRounds, a "repair" and a "check" line each). Output: the
+// best attempt.
 FitAttempt fit_and_check(const Case& c, const Surfaces& surfaces, const Decomposition& d, Observer& observer);
 
 }  // namespace igaprep::pipeline

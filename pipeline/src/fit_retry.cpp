@@ -66,7 +66,7 @@ bool round_improves(const Check& after, const Check& before) {
 }
 
 // Up to kNegativeElementRounds rounds of the repair aimed at the points
-// where the check found det J negative, each kept when the check after it is better; each
+// where the check found det J negative, each kept when round_improves; each
 // round is a "repair" summary line, the repair's time with its check's.
 void repair_negative_elements(const Case& c, const Surfaces& surfaces, const Decomposition& d, FitAttempt& m,
                               Observer& observer) {

@@ -54,10 +54,11 @@ constexpr int kFaceFitIterations = 20;
 constexpr double kFaceFitSmoothing = 0.003;
 
 // Rounds of the repair aimed at the points where the check found det J
-// negative (repair_at_negative_points) after a check with negative
-// elements, each kept only when the check then counts fewer elements not
-// certified positive (the hand: 25 negative elements between the repair's
-// samples, docs/decomposition.md section 6).
+// negative (repair_at_negative_points) after the kept attempt's check found
+// negative elements, each kept when the check then counts fewer elements
+// not certified positive, or as many with a larger smallest scaled
+// Jacobian and fidelity and volume no worse (the hand: 25 negative
+// elements between the repair's samples, docs/decomposition.md section 6).
 constexpr int kNegativeElementRounds = 4;
 // The rounds run only while the negative elements are at most this share
 // of the model's: stray folds between the repair's samples (the hand: 25

@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <map>
+#include <optional>
+#include <tuple>
 #include <string>
 
 #include "igaprep/core/error.h"
@@ -19,6 +22,7 @@
 #include "igaprep/param/surface_projector.h"
 #include "igaprep/param/tet_topology.h"
 #include "cell_geometry.h"
+#include "igaprep/param/lid_relax.h"
 #include "shell_columns.h"
 
 namespace igaprep::param {
@@ -268,6 +272,63 @@ void smooth_rectangles(VolumeContext& ctx, std::vector<RectGrid>& rect) {
       return;
   }
   rect = std::move(smooth);
+}
+
+// A rectangle's side in the domain: which lid, along u (0) or v (1), the
+// fixed coordinate, and the range. Rectangles meet side to side, so two
+// that share a side give it the same key.
+using SideKey = std::tuple<int, int, double, double, double>;
+
+SideKey side_key(const Eigen::Vector4d& R, int lid, int side) {
+  switch (side) {
+    case 0: return {lid, 0, R(1), R(0), R(2)};
+    case 1: return {lid, 0, R(3), R(0), R(2)};
+    case 2: return {lid, 1, R(0), R(1), R(3)};
+    default: return {lid, 1, R(2), R(1), R(3)};
+  }
+}
+
+// The core's cells folded under the lids counted, and with
+// lid_relax_rings > 0 each lid re-aimed where they fold (lid_relax.h):
+// every side once, copied into the rectangles that share it, then each
+// rectangle's inside.
+void relax_lids(VolumeContext& ctx, std::vector<RectGrid>& rect, VolumeParam& out) {
+  const int m = ctx.m;
+  if (ctx.options.lid_relax_rings == 0) {
+    for (const RectGrid& g : rect)
+      for (const Grid2* lid : {&g.top, &g.bottom}) out.lid_folded_before += count_folded_lid_cells(g.base, *lid, m);
+    out.lid_folded_after = out.lid_folded_before;
+    return;
+  }
+  const LidRay ray = [&](const Eigen::Vector3d& from, const Eigen::Vector3d& dir) -> std::optional<Eigen::Vector3d> {
+    try {
+      return ctx.probe.ray_to_level(from, dir, ctx.w0, ctx.step, 0.5 * ctx.diag, &ctx.hint);
+    } catch (const Error& e) {
+      if (e.kind() != ErrorKind::CheckFailed) throw;
+      return std::nullopt;
+    }
+  };
+  std::map<SideKey, Grid2> sides;
+  for (std::size_t r = 0; r < rect.size(); ++r)
+    for (int l = 0; l < 2; ++l) {
+      const Grid2& base = rect[r].base;
+      Grid2& lid = l == 0 ? rect[r].top : rect[r].bottom;
+      out.lid_folded_before += count_folded_lid_cells(base, lid, m);
+      for (int s = 0; s < 4; ++s) {
+        const std::vector<std::size_t> at = lid_side_indices(m, s);
+        const SideKey key = side_key(ctx.layout.rectangles[r], l, s);
+        auto it = sides.find(key);
+        if (it == sides.end()) {
+          relax_lid_side(base, lid, at, ray);
+          Grid2 row;
+          for (std::size_t q : at) row.push_back(lid[q]);
+          sides.emplace(key, std::move(row));
+        } else {
+          for (std::size_t k = 0; k < at.size(); ++k) lid[at[k]] = it->second[k];
+        }
+      }
+      out.lid_folded_after += relax_lid_inside(base, lid, m, ray, ctx.options.lid_relax_rings);
+    }
 }
 
 std::vector<RectGrid> sample_rectangles(VolumeContext& ctx) {
@@ -587,7 +648,8 @@ VolumeParam build_volume_param(const DecompositionMesh& H, const WField& w, cons
   out.params = params;
   out.layers = H.num_surfaces;
   VolumeContext ctx(H, w, layout, params, options, out.w0);
-  const std::vector<RectGrid> rect = sample_rectangles(ctx);
+  std::vector<RectGrid> rect = sample_rectangles(ctx);
+  if (!ctx.strategy1) relax_lids(ctx, rect, out);
   std::vector<ShellBase> faces;
   if (ctx.strategy1) {
     add_strategy1_bases(ctx, rect, faces);

@@ -114,6 +114,7 @@ void read_decomposition_section(const json& section, const std::string& file, pa
   volume.blend = r.number_in("blend", volume.blend, 0.01, 4.0);
   volume.surface_degree = r.integer("surface_degree", volume.surface_degree, 0, 12);
   volume.corner_share = r.number_in("corner_share", volume.corner_share, 0.0, 0.5);
+  volume.lid_relax_rings = r.integer("lid_relax_rings", volume.lid_relax_rings, 0, 64);
   const json* spread = r.find("spread_deviation");
   if (spread && spread->is_string()) {
     if (spread->get<std::string>() != "auto")

@@ -5,7 +5,7 @@
 //                  "corners": [[x, y, z], ...], "path_lengths": true}
 //   "decomposition": {"strategy": 2, "theta": 1.1, "w0": 0.75 (absent: midway), "inset": 0.3, "smoothing": 5,
 //                     "sliding_uv": true, "max_aspect": 2, "blend": 1.0, "crest_reach": 1.0, "surface_degree": 6,
-//                     "corner_share": 0, "spread_deviation": "auto" | number}
+//                     "corner_share": 0, "lid_relax_rings": 0, "spread_deviation": "auto" | number}
 //   "fit": {"degree": 3, "elements": 6, "oversample": 2,
 //           "jacobian_target": 0.35, "jacobian_iterations": 200, "jacobian_sweeps": 40,
 //           "jacobian_points": 5}

@@ -138,6 +138,7 @@ void add_stage_options(const Case& c, json& root) {
                            {"strategy", v.strategy}, {"theta", v.theta}, {"blend", v.blend},
                            {"crest_reach", v.crest_reach}, {"surface_degree", v.surface_degree},
                            {"corner_share", v.corner_share},
+                           {"lid_relax_rings", v.lid_relax_rings},
                            {"spread_deviation", c.auto_spread_deviation ? json("auto") : json(v.spread_deviation)},
                            {"cover_rounds", c.cover_rounds}};
   if (v.w0 >= 0.0) root["decomposition"]["w0"] = v.w0;  // absent: midway, at least 0.75

@@ -174,9 +174,11 @@ param::VolumeParam param_stage(const Case& c, const Surfaces& surfaces, const De
     cover_note = halve_rectangles_if_needed(c, d, params, options, surfaces.inputs.front(), vp);
   StageSummary s{"param", timer.seconds(),
                  text("strategy %d, core inside w = %.3f (w0): %zu blocks (%d core faces x %d layers + core), %d streamlines "
-                      "(%d faces spread; their cells folded on T1 %d -> %d), %d folded sample cells",
+                      "(%d faces spread; their cells folded on T1 %d -> %d), core cells folded under the lids %d -> %d, "
+                      "%d folded sample cells",
                       c.volume.strategy, vp.w0, vp.blocks.size(), vp.core_faces, vp.layers, vp.streamlines,
-                      vp.spread_faces, vp.t1_folded_before, vp.t1_folded_after, vp.folded_cells),
+                      vp.spread_faces, vp.t1_folded_before, vp.t1_folded_after, vp.lid_folded_before,
+                      vp.lid_folded_after, vp.folded_cells),
                  {}};
   if (vp.folded_cells > 0) {
     std::string line = "folded sample cells:";

@@ -87,6 +87,7 @@ TEST(Case, BadKeysAreRefusedByName) {
       {R"(, "decomposition": {"surface_degree": 2.5})", "decomposition.surface_degree"},
       {R"(, "decomposition": {"surface_degree": 13})", "decomposition.surface_degree"},
       {R"(, "decomposition": {"corner_share": 0.6})", "'decomposition.corner_share' must be a number in"},
+      {R"(, "decomposition": {"lid_relax_rings": 65})", "decomposition.lid_relax_rings"},
       {R"(, "decomposition": {"sliding_uv": "yes"})", "'decomposition.sliding_uv' must be true or false"},
       {R"(, "decomposition": {"max_aspect": 0.5})", "'decomposition.max_aspect' must be 0 (no cuts) or at least 1"},
       {R"(, "decomposition": {"max_aspect": -1})", "decomposition.max_aspect"},
@@ -235,7 +236,7 @@ TEST(Case, BuiltinCaseEqualsTheCommittedOne) {
 
 // case_json with every option reads back to the same options.
 TEST(Case, AllOptionsJsonReadsBack) {
-  const Case c = parse_case(sphere2_case(R"(, "decomposition": {"inset": 0.4, "theta": 0.9, "rim_reach": 0, "corner_share": 0.15}, "export": ["vtu"],
+  const Case c = parse_case(sphere2_case(R"(, "decomposition": {"inset": 0.4, "theta": 0.9, "rim_reach": 0, "corner_share": 0.15, "lid_relax_rings": 4}, "export": ["vtu"],
       "tspline": {"relative_tolerance": 0.002, "rounds": 2},
       "load_case": {"fix": {"label": "outer", "components": "xz"}, "traction": {"label": "inner", "value": [0, 1, 0]},
                     "force": {"label": "outer", "box": [[0, 0, 0], [2, 2, 2]], "value": [0, 0, -2000]},
@@ -247,6 +248,7 @@ TEST(Case, AllOptionsJsonReadsBack) {
   EXPECT_EQ(back.volume.theta, 0.9);
   EXPECT_EQ(back.base.rim_reach, 0.0);
   EXPECT_EQ(back.volume.corner_share, 0.15);
+  EXPECT_EQ(back.volume.lid_relax_rings, 4);
   EXPECT_TRUE(back.auto_spread_deviation);
   const Case given = parse_case(sphere2_case(R"(, "decomposition": {"spread_deviation": 0.003})"),
                                 models_dir() + "/sphere2", "case.json");

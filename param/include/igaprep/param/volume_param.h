@@ -71,6 +71,10 @@ struct VolumeParamOptions {
   // Strategy 2: a spread face's side on T1 relaxed on T1 where its cells
   // fold there (surface_grid_relax.h); rounds = 0: off.
   SurfaceGridRelaxOptions t1_relax;
+  // Strategy 2: the widest ring of cells around the core's folded ruled
+  // cells whose lid points are re-aimed (lid_relax.h; docs/decomposition.md,
+  // "Lids unfolded"); 0 (default): counted, not re-aimed.
+  int lid_relax_rings = 0;
   double ray_step = 2e-3;     // ray march step, fraction of H's bounding-box diagonal
   double stream_step = 1e-3;  // streamline step (Runge-Kutta 4), fraction of the diagonal
   ProgressCallback progress;  // streamlines traced, per core face
@@ -121,6 +125,10 @@ struct VolumeParam {
   // side was relaxed on T1 (VolumeParamOptions::t1_relax).
   int t1_folded_before = 0;
   int t1_folded_after = 0;
+  // The core's ruled cells folded between M and its lids, before and after
+  // the lids' rays were re-aimed (VolumeParamOptions::lid_relax_sweeps).
+  int lid_folded_before = 0;
+  int lid_folded_after = 0;
 };
 
 // Inputs: H and its w-field, M's layout (whose sheet must be M as embedded in

@@ -105,6 +105,15 @@ void repair_negative_elements(const Case& c, const Surfaces& surfaces, const Dec
   }
 }
 
+// The next attempt fits the faces on the input surfaces to them, and says so.
+void fit_faces_next(Case& next, const FitRetryDecision& why, const std::function<void(const std::string&)>& say) {
+  next.surface_fit.iterations = kFaceFitIterations;
+  next.surface_fit.smoothing = kFaceFitSmoothing;
+  say(why.reason + text(": the faces on the input surfaces are fitted to them ('fit.surface_iterations' %d, "
+                        "'fit.surface_smoothing' %g)",
+                        kFaceFitIterations, kFaceFitSmoothing));
+}
+
 }  // namespace
 
 double folded_sample_share(const param::VolumeParam& vp) {
@@ -198,7 +207,16 @@ FitAttempt best_fit_attempt(const Case& c, const std::function<MadeAttempt(const
                "elements not certified positive)",
                best.settings.fit.elements, next.fit.elements, uncertified_elements(made.check),
                uncertified_elements(best.check)));
-      return best;
+      // A finer fit that did not help leaves the kept one's fidelity to the
+      // faces fitted to the input, once.
+      FitRetryDecision no_finer;
+      no_finer.reason = text("the fit with %d elements per direction was not better", next.fit.elements);
+      const bool faces_tried = next.surface_fit.iterations > 0 || best.settings.surface_fit.iterations > 0;
+      const FitRetryDecision faces = or_fit_faces(no_finer, best.check, best.settings.fit.elements, faces_tried);
+      if (!faces.retry) return best;
+      next = best.settings;
+      fit_faces_next(next, faces, say);
+      continue;
     }
     best.settings = next;
     best.rectangles = made.vp.rectangles;
@@ -213,11 +231,7 @@ FitAttempt best_fit_attempt(const Case& c, const std::function<MadeAttempt(const
       return best;
     }
     if (decision.fit_faces) {
-      next.surface_fit.iterations = kFaceFitIterations;
-      next.surface_fit.smoothing = kFaceFitSmoothing;
-      say(decision.reason + text(": the faces on the input surfaces are fitted to them ('fit.surface_iterations' %d, "
-                                 "'fit.surface_smoothing' %g)",
-                                 kFaceFitIterations, kFaceFitSmoothing));
+      fit_faces_next(next, decision, say);
       continue;
     }
     say(decision.reason + text(": the blocks are sampled and fitted again with %d elements per direction "

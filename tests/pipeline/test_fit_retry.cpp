@@ -212,6 +212,54 @@ TEST(FitRetry, TheFacesFittedAttemptKeepsTheElementsAndIsKeptWhenBetter) {
   EXPECT_NE(said[0].find("the faces on the input surfaces are fitted to them"), std::string::npos) << said[0];
 }
 
+// A finer fit that is not better: the kept fit's faces are fitted, once,
+// where fidelity alone failed it (the kitten with its lids unfolded: every
+// element positive at 6 but fidelity 0.537 %, 4 negative elements at 8).
+TEST(FitRetry, AfterAFinerFitThatIsNotBetterTheKeptOnesFacesAreFitted) {
+  Case c;
+  std::vector<std::pair<int, int>> made;  // elements, face iterations
+  auto make = [&](const Case& attempt) {
+    made.emplace_back(attempt.fit.elements, attempt.surface_fit.iterations);
+    igaprep::pipeline::MadeAttempt m;
+    m.vp = sampled(100, 100);  // 0.69 % folded: a finer fit is tried
+    if (attempt.surface_fit.iterations > 0) m.check = check_failing({});
+    else m.check = attempt.fit.elements == 6 ? check_failing({"fidelity"}, 0, 1.074) : check_failing({"jacobian"}, 4);
+    return m;
+  };
+  std::vector<std::string> said;
+  const auto kept = igaprep::pipeline::best_fit_attempt(c, make, [&](const std::string& l) { said.push_back(l); });
+  const int faces = igaprep::pipeline::kFaceFitIterations;
+  EXPECT_EQ(made, (std::vector<std::pair<int, int>>{{6, 0}, {9, 0}, {6, faces}}));
+  EXPECT_TRUE(kept.check.report.passed);
+  EXPECT_EQ(kept.settings.fit.elements, 6);
+  EXPECT_EQ(kept.settings.surface_fit.iterations, faces);
+  ASSERT_EQ(said.size(), 3u);
+  EXPECT_NE(said[2].find("no finer fit: the fit with 9 elements per direction was not better; fidelity alone failed, "
+                         "1.07 times its limit: the faces on the input surfaces are fitted to them"),
+            std::string::npos)
+      << said[2];
+}
+
+// ... and when the faces fitted do not help either, the first fit is kept
+// and the loop ends (faces are fitted once).
+TEST(FitRetry, TheFacesAreFittedOnceAfterAFinerFitThatIsNotBetter) {
+  Case c;
+  int attempts = 0;
+  auto make = [&](const Case& attempt) {
+    ++attempts;
+    igaprep::pipeline::MadeAttempt m;
+    m.vp = sampled(100, 100);
+    m.check = attempt.fit.elements == 6 && attempt.surface_fit.iterations == 0 ? check_failing({"fidelity"}, 0, 1.074)
+                                                                               : check_failing({"jacobian"}, 4);
+    return m;
+  };
+  const auto kept = igaprep::pipeline::best_fit_attempt(c, make, [](const std::string&) {});
+  EXPECT_EQ(attempts, 3);
+  EXPECT_EQ(kept.settings.fit.elements, 6);
+  EXPECT_EQ(kept.settings.surface_fit.iterations, 0);
+  EXPECT_EQ(kept.check.figures.negative, 0);
+}
+
 // The keys: an explicit elements count is kept unless max_elements asks for
 // more; both are written back.
 TEST(FitRetry, CaseKeys) {

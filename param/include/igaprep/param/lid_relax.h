@@ -3,12 +3,12 @@
 // ray from M to the level w0; where M bends faster than the rays are long
 // (a bump of M narrower than the core is thick, a rectangle squeezed by the
 // (u, v) map), neighbouring rays cross and the core's ruled cells fold
-// (docs/decomposition.md, "Lids unfolded"). Here such a rectangle's inner
-// lid points are re-aimed, each ray through the mean of its four
-// neighbours' lid points, with the rectangle's border fixed (shared with
-// its neighbours and the crests) unless the side itself turns back along
-// its length: each side is then relaxed on its own first, as a function of
-// its own points only, so the two rectangles that share it agree.
+// (docs/decomposition.md, "Lids unfolded"). Here such a rectangle's lid
+// points are re-aimed: first each side where it turns back along its
+// length, as a function of the side's own points (the rectangles sharing
+// it must agree), then the inner points around the folded cells, at a
+// discrete harmonic grid of the lid. Every re-aimed point is where its
+// new ray meets the level.
 #include <cstddef>
 #include <functional>
 #include <optional>

@@ -37,15 +37,12 @@ bool segment_folded(const Grid& base, const Grid& lid, std::size_t a, std::size_
   return (0.5 * (tb + tl)).dot(tb) <= 0.0 || tl.dot(tb) <= 0.0;
 }
 
-// The lid point of base point p re-aimed at target; false (and unchanged)
-// when the ray would turn to M's other side or fails.
-bool aim(const Grid& base, Grid& lid, std::size_t p, const Eigen::Vector3d& target, const LidRay& ray) {
+// The lid point of base point p re-aimed at target; unchanged where the ray
+// would turn to M's other side or fails.
+void aim(const Grid& base, Grid& lid, std::size_t p, const Eigen::Vector3d& target, const LidRay& ray) {
   const Eigen::Vector3d dir = target - base[p];
-  if (!(dir.norm() > 0.0) || dir.dot(lid[p] - base[p]) <= 0.0) return false;
-  const std::optional<Eigen::Vector3d> end = ray(base[p], dir.normalized());
-  if (!end) return false;
-  lid[p] = *end;
-  return true;
+  if (!(dir.norm() > 0.0) || dir.dot(lid[p] - base[p]) <= 0.0) return;
+  if (const std::optional<Eigen::Vector3d> end = ray(base[p], dir.normalized())) lid[p] = *end;
 }
 
 // The folded cells in groups that touch (corners included), each a list of
@@ -174,16 +171,6 @@ int relax_lid_inside(const Grid& base, Grid& lid, int m, const LidRay& ray, int 
       else lid = before;
     }
   return folded;
-}
-
-LidRelaxResult relax_lid(const Grid& base, Grid& lid, int m, const LidRay& ray, int max_rings) {
-  LidRelaxResult r;
-  r.folded_before = count_folded_lid_cells(base, lid, m);
-  r.folded_after = r.folded_before;
-  if (r.folded_before == 0) return r;
-  for (int side = 0; side < 4; ++side) relax_lid_side(base, lid, lid_side_indices(m, side), ray);
-  r.folded_after = relax_lid_inside(base, lid, m, ray, max_rings);
-  return r;
 }
 
 }  // namespace igaprep::param

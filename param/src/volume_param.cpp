@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <map>
+#include <memory>
 #include <optional>
-#include <tuple>
 #include <string>
+#include <tuple>
 
 #include "igaprep/core/error.h"
 #include "igaprep/core/progress.h"
@@ -16,13 +16,13 @@
 #include "igaprep/param/gradient.h"
 #include "igaprep/param/grid_smoothing.h"
 #include "igaprep/param/inset_base.h"
+#include "igaprep/param/lid_relax.h"
 #include "igaprep/param/sheet_sampler.h"
 #include "igaprep/param/streamline_column.h"
 #include "igaprep/param/surface_grid_relax.h"
 #include "igaprep/param/surface_projector.h"
 #include "igaprep/param/tet_topology.h"
 #include "cell_geometry.h"
-#include "igaprep/param/lid_relax.h"
 #include "shell_columns.h"
 
 namespace igaprep::param {

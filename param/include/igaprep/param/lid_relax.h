@@ -22,11 +22,6 @@ namespace igaprep::param {
 // where the ray fails (it leaves the solid).
 using LidRay = std::function<std::optional<Eigen::Vector3d>(const Eigen::Vector3d& from, const Eigen::Vector3d& dir)>;
 
-struct LidRelaxResult {
-  int folded_before = 0;  // ruled cells between M and the lid with a corner turned over
-  int folded_after = 0;
-};
-
 // The cells (i, j) of the ruled block between base and lid (m x m grids,
 // first index fastest) whose corner volume, at the lid or halfway to it,
 // has the opposite sign from the one at the base.
@@ -40,7 +35,9 @@ std::vector<std::size_t> lid_side_indices(int m, int side);
 // turns back along its length: each run of folded segments re-aimed along
 // the chord between the nearest points around it that keep their order,
 // kept if the side's folded segments become fewer. A function of the
-// side's own points only.
+// side's own points only; still, rectangles that share a side relax it
+// once and copy it (volume_param.cpp): their samples of one side can
+// differ in round-off, and a fold judged on one of them only splits it.
 void relax_lid_side(const std::vector<Eigen::Vector3d>& base, std::vector<Eigen::Vector3d>& lid,
                     const std::vector<std::size_t>& side, const LidRay& ray);
 
@@ -51,12 +48,5 @@ void relax_lid_side(const std::vector<Eigen::Vector3d>& base, std::vector<Eigen:
 // the folded cells left.
 int relax_lid_inside(const std::vector<Eigen::Vector3d>& base, std::vector<Eigen::Vector3d>& lid, int m,
                      const LidRay& ray, int max_rings = 8);
-
-// A rectangle on its own: its four sides, then its inside. Where rectangles
-// share sides, relax each side once and copy it (volume_param.cpp): two
-// rectangles' samples of one side can differ in round-off, and a fold
-// judged on one of them only would split the side.
-LidRelaxResult relax_lid(const std::vector<Eigen::Vector3d>& base, std::vector<Eigen::Vector3d>& lid, int m,
-                         const LidRay& ray, int max_rings = 8);
 
 }  // namespace igaprep::param

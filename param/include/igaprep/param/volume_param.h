@@ -126,7 +126,7 @@ struct VolumeParam {
   int t1_folded_before = 0;
   int t1_folded_after = 0;
   // The core's ruled cells folded between M and its lids, before and after
-  // the lids' rays were re-aimed (VolumeParamOptions::lid_relax_sweeps).
+  // the lids' rays were re-aimed (VolumeParamOptions::lid_relax_rings).
   int lid_folded_before = 0;
   int lid_folded_after = 0;
 };
